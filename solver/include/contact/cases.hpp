@@ -1,0 +1,56 @@
+// The four cases of the one-sided contact step (A.2) and the result type.
+#pragma once
+
+#include <string_view>
+
+namespace contact {
+
+// Which closed form of the appendix's summary applies. The numbering is the
+// appendix's own, so `static_cast<int>(c)` is what the CLI prints.
+enum class contact_case : int {
+  invalid = 0,   // NaN or infinite input, or phi < 0: s is NaN
+  free = 1,      // (A.29) dy <= 0, u <= -dy: no contact before or after, s = -u, s >= dy
+  impact = 2,    // (A.30) dy <= 0, u >  -dy: contact begins, s < dy
+  contact = 3,   // (A.31) dy >  0, u >= dy (phi - 1): contact persists, s <= dy
+  release = 4,   // (A.32) dy >  0, u <  dy (phi - 1): contact ends, s > dy
+};
+
+constexpr std::string_view equation_of(contact_case c) {
+  switch (c) {
+    case contact_case::free: return "(A.29)";
+    case contact_case::impact: return "(A.30)";
+    case contact_case::contact: return "(A.31)";
+    case contact_case::release: return "(A.32)";
+    default: return "invalid";
+  }
+}
+
+// Complementarity: the side of dy on which s lies, as each case claims it.
+template <class T>
+constexpr bool lies_on_its_side(contact_case c, const T& s, const T& dy) {
+  switch (c) {
+    case contact_case::free: return s >= dy;
+    case contact_case::impact: return s < dy;
+    case contact_case::contact: return s <= dy;
+    case contact_case::release: return s > dy;
+    default: return false;
+  }
+}
+
+template <class T>
+struct solution {
+  T s;                 // the step s_b = y[n+1] - y[n]
+  contact_case which;  // the case that produced it
+};
+
+enum class algorithm { textbook, stable, newton };
+
+constexpr std::string_view name_of(algorithm a) {
+  switch (a) {
+    case algorithm::textbook: return "textbook";
+    case algorithm::stable: return "stable";
+    default: return "newton";
+  }
+}
+
+}  // namespace contact

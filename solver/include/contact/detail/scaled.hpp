@@ -1,0 +1,132 @@
+// scaled<T>: a significand of type T in [0.5, 1) and a separate integer
+// exponent. Every operation rescales by an exact power of two, so the
+// significand arithmetic rounds exactly as T would with an unbounded exponent
+// range: no intermediate overflows or underflows. The only roundings beyond
+// T's are (a) in a sum whose smaller term lies more than the whole exponent
+// range of T below the larger (an absolute error below T's least subnormal
+// relative to the larger term) and (b) at the end, in the conversion back to T.
+#pragma once
+
+#include <climits>
+#include <cmath>
+
+namespace contact::detail {
+
+template <class T>
+struct scaled {
+  T significand{0};  // 0, or 0.5 <= |significand| < 1; NaN and inf kept as they are
+  long exponent{0};
+
+  scaled() = default;
+  scaled(const T& x) { *this = normalized(x, 0); }  // NOLINT: implicit, as for T
+  scaled(int x) : scaled(T(x)) {}                   // NOLINT
+
+  static scaled normalized(const T& m, long e) {
+    using std::frexp;
+    using std::isfinite;
+    scaled r;
+    if (m == 0 || !isfinite(m)) {
+      r.significand = m;
+      return r;
+    }
+    int k = 0;
+    r.significand = frexp(m, &k);
+    r.exponent = e + k;
+    return r;
+  }
+
+  // x * 2^shift, clamped so that huge shifts saturate to 0 or infinity.
+  static T shifted(const T& x, long shift) {
+    using std::ldexp;
+    constexpr long limit = INT_MAX / 2;
+    if (shift > limit) shift = limit;
+    if (shift < -limit) shift = -limit;
+    return ldexp(x, static_cast<int>(shift));
+  }
+
+  T value() const { return shifted(significand, exponent); }
+  int sign() const { return significand > 0 ? 1 : (significand < 0 ? -1 : 0); }
+
+  friend scaled operator-(const scaled& a) { return {-a.significand, a.exponent, 0}; }
+  friend scaled operator*(const scaled& a, const scaled& b) {
+    return normalized(a.significand * b.significand, a.exponent + b.exponent);
+  }
+  friend scaled operator/(const scaled& a, const scaled& b) {
+    return normalized(a.significand / b.significand, a.exponent - b.exponent);
+  }
+  friend scaled operator+(const scaled& a, const scaled& b) {
+    if (b.significand == 0) return a;
+    if (a.significand == 0) return b;
+    if (a.exponent >= b.exponent)
+      return normalized(a.significand + shifted(b.significand, b.exponent - a.exponent), a.exponent);
+    return normalized(shifted(a.significand, a.exponent - b.exponent) + b.significand, b.exponent);
+  }
+  friend scaled operator-(const scaled& a, const scaled& b) { return a + (-b); }
+  friend bool operator>(const scaled& a, const scaled& b) { return (a - b).sign() > 0; }
+
+  // a * b + c with the single rounding of T's fma.
+  friend scaled fma(const scaled& a, const scaled& b, const scaled& c) {
+    using std::fma;
+    if (a.significand == 0 || b.significand == 0) return c;
+    long product_exponent = a.exponent + b.exponent;
+    if (c.significand == 0 || product_exponent >= c.exponent)
+      return normalized(fma(a.significand, b.significand, shifted(c.significand, c.exponent - product_exponent)),
+                        product_exponent);
+    return normalized(fma(a.significand, shifted(b.significand, product_exponent - c.exponent), c.significand),
+                      c.exponent);
+  }
+
+  friend scaled sqrt(const scaled& a) {
+    using std::sqrt;
+    if (a.significand <= 0) return normalized(sqrt(a.significand), 0);
+    // an even exponent halves exactly; the significand moves into [0.25, 1)
+    bool odd = (a.exponent % 2) != 0;
+    T m = odd ? a.significand / 2 : a.significand;
+    long e = odd ? a.exponent + 1 : a.exponent;
+    return normalized(sqrt(m), e / 2);
+  }
+
+ private:
+  scaled(const T& m, long e, int) : significand(m), exponent(e) {}
+};
+
+}  // namespace contact::detail
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+#include "float_tools.hpp"
+
+namespace contact::detail {
+
+// Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
+// by exponent and cut into clusters wherever two neighbours lie more than
+// digits + 3 binades apart; a non-zero cluster sum is at least the least
+// significant bit of its smallest term, which outweighs everything below the
+// gap, so the first non-zero cluster decides. Within a cluster the spread is
+// small enough to shift into T's normal range and sum exactly.
+template <class T, std::size_t N>
+int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
+  const long gap = long(precision_of<T>()) + 3;
+  std::sort(terms.begin(), terms.end(), [](const scaled<T>& a, const scaled<T>& b) {
+    if ((a.significand == 0) != (b.significand == 0)) return b.significand == 0;
+    return a.exponent > b.exponent;
+  });
+  std::size_t i = 0;
+  while (i < N && terms[i].significand != 0) {
+    const long top = terms[i].exponent;
+    long previous = top;
+    T cluster[N];
+    std::size_t count = 0;
+    for (; i < N && terms[i].significand != 0 && previous - terms[i].exponent <= gap; ++i) {
+      cluster[count++] = scaled<T>::shifted(terms[i].significand, terms[i].exponent - top);
+      previous = terms[i].exponent;
+    }
+    for (std::size_t k = count; k < N; ++k) cluster[k] = 0;
+    if (int sign = sign_of_exact_sum(cluster)) return sign;
+  }
+  return 0;
+}
+
+}  // namespace contact::detail

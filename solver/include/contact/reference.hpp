@@ -1,0 +1,254 @@
+// The certified reference solution of (A.2), in MPFR, against which every
+// accuracy figure of the project is measured.
+//
+// The case is decided exactly, in rational arithmetic (GMP). s is then
+// computed by the case's closed form in MPFR at `bits` >= 256 bits, and
+// certified: the exact residual of (A.2) is evaluated in rational arithmetic at
+// s - delta and s + delta (delta = 2^-(bits-8) |s|) and must change sign there.
+// R is strictly increasing, so the one root lies in that bracket; when both
+// ends round to the same value of T, that value is the correctly rounded root.
+#pragma once
+
+#include <gmp.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "cases.hpp"
+#include "detail/float_tools.hpp"
+
+namespace contact::reference {
+
+// RAII for mpfr_t at a fixed precision.
+class real {
+ public:
+  explicit real(mpfr_prec_t bits) { mpfr_init2(value_, bits); mpfr_set_zero(value_, 1); }
+  real(const real& other) { mpfr_init2(value_, mpfr_get_prec(other.value_)); mpfr_set(value_, other.value_, MPFR_RNDN); }
+  real& operator=(const real& other) {
+    if (this != &other) { mpfr_set_prec(value_, mpfr_get_prec(other.value_)); mpfr_set(value_, other.value_, MPFR_RNDN); }
+    return *this;
+  }
+  ~real() { mpfr_clear(value_); }
+  mpfr_ptr get() { return value_; }
+  mpfr_srcptr get() const { return value_; }
+  double to_double() const { return mpfr_get_d(value_, MPFR_RNDN); }
+  std::string to_string(int digits = 40) const {
+    char* text = nullptr;
+    mpfr_asprintf(&text, "%.*Rg", digits, value_);
+    std::string result(text);
+    mpfr_free_str(text);
+    return result;
+  }
+
+ private:
+  mpfr_t value_;
+};
+
+// RAII for mpq_t: exact rationals, for signs that must not be rounded.
+class rational {
+ public:
+  rational() { mpq_init(value_); }
+  explicit rational(const real& x) { mpq_init(value_); mpfr_get_q(value_, x.get()); }
+  rational(const rational& other) { mpq_init(value_); mpq_set(value_, other.value_); }
+  rational& operator=(const rational& other) { mpq_set(value_, other.value_); return *this; }
+  ~rational() { mpq_clear(value_); }
+  mpq_ptr get() { return value_; }
+  mpq_srcptr get() const { return value_; }
+  int sign() const { return mpq_sgn(value_); }
+  friend rational operator+(const rational& a, const rational& b) { rational r; mpq_add(r.value_, a.value_, b.value_); return r; }
+  friend rational operator-(const rational& a, const rational& b) { rational r; mpq_sub(r.value_, a.value_, b.value_); return r; }
+  friend rational operator*(const rational& a, const rational& b) { rational r; mpq_mul(r.value_, a.value_, b.value_); return r; }
+
+ private:
+  mpq_t value_;
+};
+
+// x of any binary floating type, exactly, as an MPFR number of `bits` >= its
+// precision: the significand is peeled off 32 bits at a time, each step exact.
+template <class T>
+real exactly(const T& x, mpfr_prec_t bits) {
+  using std::floor;
+  using std::frexp;
+  using std::ldexp;
+  real result(bits);
+  if (x == 0) return result;
+  int exponent = 0;
+  T rest = frexp(x < 0 ? T(-x) : x, &exponent);
+  int consumed = 0;
+  while (rest != 0) {
+    rest = ldexp(rest, 32);
+    T chunk = floor(rest);
+    rest -= chunk;
+    consumed += 32;
+    mpfr_mul_2ui(result.get(), result.get(), 32, MPFR_RNDN);
+    mpfr_add_ui(result.get(), result.get(), static_cast<unsigned long>(static_cast<double>(chunk)), MPFR_RNDN);
+  }
+  mpfr_mul_2si(result.get(), result.get(), static_cast<long>(exponent) - consumed, MPFR_RNDN);
+  if (x < 0) mpfr_neg(result.get(), result.get(), MPFR_RNDN);
+  return result;
+}
+
+struct certified {
+  real s;               // the root, to the working precision
+  real lower, upper;    // R(lower) <= 0 <= R(upper), exactly
+  contact_case which;   // exact
+  bool is_certified;    // false only if the bracket test failed (never seen; tested)
+};
+
+namespace detail_ref {
+
+inline rational square(const rational& x) { return x * x; }
+inline rational floor_squared(const rational& x) { return x.sign() > 0 ? x * x : rational(); }
+
+// sign of R(s) = s + u + phi (floor(dy - s)^2 - floor(dy)^2) / s, exactly, for s != 0
+// (as the sign of s R(s), a polynomial, times the sign of s).
+inline int residual_sign(const rational& s, const rational& u, const rational& dy, const rational& phi) {
+  rational times_s = s * s + u * s + phi * (floor_squared(dy - s) - floor_squared(dy));
+  return times_s.sign() * s.sign();
+}
+
+}  // namespace detail_ref
+
+// Solves (A.2) for finite u, dy and phi >= 0 given in type T.
+template <class T>
+certified solve(const T& u_in, const T& dy_in, const T& phi_in, mpfr_prec_t bits = 0) {
+  const int digits = contact::detail::precision_of<T>();
+  if (bits == 0) bits = std::max<mpfr_prec_t>(256, 4 * digits);
+  const real u = exactly(u_in, bits), dy = exactly(dy_in, bits), phi = exactly(phi_in, bits);
+  const rational uq(u), dyq(dy), phiq(phi);
+
+  contact_case which;
+  if (dyq.sign() <= 0) which = (uq + dyq).sign() <= 0 ? contact_case::free : contact_case::impact;
+  else which = (uq + dyq - phiq * dyq).sign() >= 0 ? contact_case::contact : contact_case::release;
+
+  // The closed forms, each from (A.2) (see stable.hpp for the derivations).
+  // Exponents are unbounded here, and `work` bits of precision make every rounding negligible.
+  const mpfr_prec_t work = bits + 64;
+  real s(work), a(work), b(work), c(work);
+  const auto r = MPFR_RNDN;
+  switch (which) {
+    case contact_case::free:  // (A.29)
+      mpfr_neg(s.get(), u.get(), r);
+      break;
+    case contact_case::impact:  // (A.30): -(u - 2 phi dy + sqrt(u^2 - 4 phi dy (u + dy))) / (2 (1 + phi))
+      mpfr_add(a.get(), u.get(), dy.get(), r);
+      mpfr_mul(a.get(), a.get(), dy.get(), r);
+      mpfr_mul(a.get(), a.get(), phi.get(), r);
+      mpfr_mul_2ui(a.get(), a.get(), 2, r);
+      mpfr_sqr(b.get(), u.get(), r);
+      mpfr_sub(a.get(), b.get(), a.get(), r);
+      mpfr_sqrt(a.get(), a.get(), r);
+      mpfr_mul(b.get(), phi.get(), dy.get(), r);
+      mpfr_mul_2ui(b.get(), b.get(), 1, r);
+      mpfr_sub(b.get(), u.get(), b.get(), r);
+      mpfr_add(a.get(), a.get(), b.get(), r);
+      mpfr_add_ui(c.get(), phi.get(), 1, r);
+      mpfr_mul_2ui(c.get(), c.get(), 1, r);
+      mpfr_div(s.get(), a.get(), c.get(), r);
+      mpfr_neg(s.get(), s.get(), r);
+      break;
+    case contact_case::contact:  // (A.31) corrected: (2 phi dy - u) / (1 + phi)
+      mpfr_mul(a.get(), phi.get(), dy.get(), r);
+      mpfr_mul_2ui(a.get(), a.get(), 1, r);
+      mpfr_sub(a.get(), a.get(), u.get(), r);
+      mpfr_add_ui(c.get(), phi.get(), 1, r);
+      mpfr_div(s.get(), a.get(), c.get(), r);
+      break;
+    default: {  // (A.32), rationalised for u > 0: 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2))
+      mpfr_sqr(a.get(), dy.get(), r);
+      mpfr_mul(a.get(), a.get(), phi.get(), r);  // phi dy^2
+      mpfr_mul_2ui(b.get(), a.get(), 2, r);
+      mpfr_sqr(c.get(), u.get(), r);
+      mpfr_add(b.get(), b.get(), c.get(), r);
+      mpfr_sqrt(b.get(), b.get(), r);  // the root
+      if (mpfr_sgn(u.get()) > 0) {
+        mpfr_add(b.get(), b.get(), u.get(), r);
+        mpfr_mul_2ui(a.get(), a.get(), 1, r);
+        mpfr_div(s.get(), a.get(), b.get(), r);
+      } else {
+        mpfr_sub(s.get(), b.get(), u.get(), r);
+        mpfr_div_2ui(s.get(), s.get(), 1, r);
+      }
+    }
+  }
+
+  certified result{real(work), real(work), real(work), which, false};
+  mpfr_set(result.s.get(), s.get(), r);
+  if (mpfr_zero_p(s.get())) {
+    // s = 0 comes out of round-to-nearest only when it is exact; the limit of R
+    // at 0 is then u - 2 phi floor(dy), which must vanish
+    const rational limit = uq - (dyq.sign() > 0 ? phiq * dyq + phiq * dyq : rational());
+    result.is_certified = limit.sign() == 0;
+    return result;
+  }
+  real delta(work);  // a relative 2^-(bits - 8) of s
+  mpfr_abs(delta.get(), s.get(), r);
+  mpfr_div_2ui(delta.get(), delta.get(), bits - 8, r);
+  mpfr_sub(result.lower.get(), s.get(), delta.get(), MPFR_RNDD);
+  mpfr_add(result.upper.get(), s.get(), delta.get(), MPFR_RNDU);
+  const int at_lower = detail_ref::residual_sign(rational(result.lower), uq, dyq, phiq);
+  const int at_upper = detail_ref::residual_sign(rational(result.upper), uq, dyq, phiq);
+  result.is_certified = at_lower <= 0 && at_upper >= 0;
+  return result;
+}
+
+// One unit in the last place of T at x: 2^(max(e, emin) - p + 1), where
+// 2^e <= |x| < 2^(e+1), emin is T's least normal exponent and p its precision;
+// beyond T's largest finite value, the ulp of that value.
+template <class T>
+real ulp_of(const real& x) {
+  const long p = contact::detail::precision_of<T>();
+  const long emin = std::numeric_limits<T>::min_exponent - 1;
+  const long emax = std::numeric_limits<T>::max_exponent - 1;
+  long e = mpfr_zero_p(x.get()) ? emin : long(mpfr_get_exp(x.get())) - 1;
+  e = std::clamp(e, emin, emax);
+  real result(64);
+  mpfr_set_ui_2exp(result.get(), 1, e - p + 1, MPFR_RNDN);
+  return result;
+}
+
+// |computed - exact| in ulps of T at the exact root. NaN for a NaN answer;
+// infinity for an infinite answer, unless the exact root is itself beyond
+// T's range in that direction (then the rounded root is that infinity too).
+template <class T>
+double ulp_error(const T& computed, const certified& exact) {
+  using std::isinf;
+  using std::isnan;
+  if (isnan(computed)) return std::numeric_limits<double>::quiet_NaN();
+  if (isinf(computed)) {
+    real largest = exactly((std::numeric_limits<T>::max)(), mpfr_get_prec(exact.s.get()));
+    real half_ulp = ulp_of<T>(largest);
+    mpfr_div_2ui(half_ulp.get(), half_ulp.get(), 1, MPFR_RNDN);
+    mpfr_add(largest.get(), largest.get(), half_ulp.get(), MPFR_RNDN);  // the rounding threshold to infinity
+    const bool beyond = computed > 0 ? mpfr_cmp(exact.s.get(), largest.get()) >= 0
+                                     : mpfr_cmpabs(exact.s.get(), largest.get()) >= 0 && mpfr_sgn(exact.s.get()) < 0;
+    return beyond ? 0.0 : std::numeric_limits<double>::infinity();
+  }
+  real difference = exactly(computed, mpfr_get_prec(exact.s.get()) + 64);
+  mpfr_sub(difference.get(), difference.get(), exact.s.get(), MPFR_RNDN);
+  mpfr_abs(difference.get(), difference.get(), MPFR_RNDN);
+  mpfr_div(difference.get(), difference.get(), ulp_of<T>(exact.s).get(), MPFR_RNDN);
+  return mpfr_get_d(difference.get(), MPFR_RNDU);
+}
+
+// The root rounded to nearest in double, with gradual underflow.
+inline double rounded_to_double(const real& x) {
+  const mpfr_exp_t old_emin = mpfr_get_emin(), old_emax = mpfr_get_emax();
+  mpfr_set_emin(-1073);  // binary64's range in MPFR's convention (significand in [1/2, 1))
+  mpfr_set_emax(1024);
+  mpfr_t copy;
+  mpfr_init2(copy, 53);
+  int inexact = mpfr_set(copy, x.get(), MPFR_RNDN);
+  inexact = mpfr_check_range(copy, inexact, MPFR_RNDN);
+  mpfr_subnormalize(copy, inexact, MPFR_RNDN);
+  const double result = mpfr_get_d(copy, MPFR_RNDN);
+  mpfr_clear(copy);
+  mpfr_set_emin(old_emin);
+  mpfr_set_emax(old_emax);
+  return result;
+}
+
+}  // namespace contact::reference

@@ -1,0 +1,29 @@
+// contact::solve: the closed-form solution of the one-sided contact step (A.2)
+//
+//     s + u + phi (floor(dy - s)^2 - floor(dy)^2) / s = 0,   floor(x) = max(x, 0),
+//
+// for any scalar type T with std-style sqrt, fma, frexp and ldexp (float, double,
+// long double, and Boost.Multiprecision et_off types). Every finite u, dy and
+// phi >= 0 is a valid input and (A.2) then has exactly one root. NaN or infinite
+// input, or phi < 0, returns NaN with contact_case::invalid. phi = 0 gives s = -u.
+#pragma once
+
+#include "cases.hpp"
+#include "newton.hpp"
+#include "stable.hpp"
+#include "textbook.hpp"
+
+namespace contact {
+
+template <class T>
+solution<T> solve(const T& u, const T& dy, const T& phi, algorithm method = algorithm::stable) {
+  switch (method) {
+    case algorithm::textbook: return solve_textbook(u, dy, phi);
+    case algorithm::newton: return solve_newton(u, dy, phi);
+    default: return solve_stable(u, dy, phi);
+  }
+}
+
+inline constexpr algorithm algorithms[] = {algorithm::textbook, algorithm::stable, algorithm::newton};
+
+}  // namespace contact

@@ -1,0 +1,141 @@
+// The stable closed form of (A.2).
+//
+// Each case formula below is derived from (A.2) itself (the printed summary
+// has misprints, see proofs/README.md) and written so that no step subtracts
+// nearly equal numbers. The formulas are templates on the arithmetic type:
+// plain T inside a window of exponents where no intermediate can overflow or
+// underflow, and scaled<T> (exact power-of-two rescaling at every step) outside
+// it. Both run the same operations on the same significands, so the window
+// changes speed, never the result (barring the final rounding of a result in
+// T's subnormal range).
+//
+// The case is decided exactly (the criteria are signs of exact sums), and s is
+// then forced onto the side of dy that its case claims: a rounding can move it
+// at most one ulp, onto dy itself, and the clamp moves it back.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "cases.hpp"
+#include "detail/float_tools.hpp"
+#include "detail/input.hpp"
+#include "detail/scaled.hpp"
+
+namespace contact {
+namespace stable_form {
+
+// (A.30), from the quadratic (A.9) (1+phi) s^2 + (u - 2 phi dy) s + phi dy^2 = 0,
+// with gap = -dy >= 0 and u > gap. Its smaller root is wanted; with dy <= 0 and
+// u > 0 both summands of the numerator are negative, so the textbook root has no
+// cancellation. The discriminant u^2 - 4 phi dy (u + dy) is a sum of
+// non-negative terms; u - gap is exact when they are close (Sterbenz).
+template <class Num>
+Num impact(const Num& u, const Num& gap, const Num& phi) {
+  using std::fma;
+  using std::sqrt;
+  const Num push = phi * gap;  // phi |dy|
+  const Num discriminant = fma(u, u, Num(4) * (push * (u - gap)));
+  return -((u + Num(2) * push) + sqrt(discriminant)) / (Num(2) * (Num(1) + phi));
+}
+
+// (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
+// s = (2 phi dy - u) / (1 + phi). The numerator cancels as s -> 0; the fma
+// leaves it a single rounding. 2 dy, not 2 phi, so that nothing overflows.
+template <class Num>
+Num contact(const Num& u, const Num& dy, const Num& phi) {
+  using std::fma;
+  return fma(phi, Num(2) * dy, -u) / (Num(1) + phi);
+}
+
+// (A.32), from (A.23) corrected: s^2 + u s - phi dy^2 = 0, positive root
+// s = (-u + sqrt(u^2 + 4 phi dy^2)) / 2. For u > 0 the sum cancels, so the root
+// is rationalised: s = 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2)).
+template <class Num>
+Num release(const Num& u, const Num& dy, const Num& phi) {
+  using std::fma;
+  using std::sqrt;
+  const Num stiffness_term = (phi * dy) * dy;  // phi dy^2
+  const Num root = sqrt(fma(u, u, Num(4) * stiffness_term));
+  if (u > Num(0)) return Num(2) * stiffness_term / (u + root);
+  return (root - u) / Num(2);
+}
+
+}  // namespace stable_form
+
+namespace detail {
+
+// Exponent window inside which plain T arithmetic cannot overflow or underflow
+// in any of the formulas above (their intermediates are of degree three at most
+// in u, dy and phi, and the least significant bit of a difference lies at most
+// `digits` binades lower).
+template <class T>
+struct safe_window {
+  static long half_width() {
+    return (long(std::numeric_limits<T>::max_exponent) - long(precision_of<T>())) / 4 - 2;
+  }
+  static bool holds(const T& x) {
+    using std::fabs;
+    const T magnitude = fabs(x);
+    if (magnitude == 0) return true;
+    if constexpr (std::numeric_limits<T>::is_bounded && std::numeric_limits<T>::max_exponent < 20000) {
+      static const T lowest = scaled<T>::shifted(T(1), -half_width());
+      static const T highest = scaled<T>::shifted(T(1), half_width());
+      return lowest <= magnitude && magnitude <= highest;
+    } else {
+      const long bound = half_width();
+      return scaled<T>::shifted(T(1), -bound) <= magnitude && magnitude <= scaled<T>::shifted(T(1), bound);
+    }
+  }
+  static bool holds(const T& u, const T& dy, const T& phi) { return holds(u) && holds(dy) && holds(phi); }
+};
+
+// (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
+// enters as the exact pair of two_prod; the sign is then that of an exact sum.
+template <class T>
+bool stays_in_contact(const T& u, const T& dy, const T& phi, bool plain) {
+  if (plain) {
+    const auto product = two_prod(phi, dy);
+    const T terms[4] = {u, dy, -product.high, -product.low};
+    return sign_of_exact_sum(terms) >= 0;
+  }
+  const scaled<T> phi_s(phi), dy_s(dy);
+  const auto significand_product = two_prod(phi_s.significand, dy_s.significand);  // never underflows
+  const long product_exponent = phi_s.exponent + dy_s.exponent;
+  const std::array<scaled<T>, 4> terms = {
+      scaled<T>(u), dy_s, scaled<T>::normalized(-significand_product.high, product_exponent),
+      scaled<T>::normalized(-significand_product.low, product_exponent)};
+  return sign_of_exact_sum(terms) >= 0;
+}
+
+template <class T, class Formula>
+T evaluate(Formula formula, const T& x, const T& y, const T& phi, bool plain) {
+  if (plain) return formula(x, y, phi);
+  using S = scaled<T>;
+  return formula(S(x), S(y), S(phi)).value();
+}
+
+}  // namespace detail
+
+template <class T>
+solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
+  if (auto invalid = detail::reject_invalid(u, dy, phi)) return *invalid;
+  const bool plain = detail::safe_window<T>::holds(u, dy, phi);
+  if (dy <= 0) {
+    if (u <= -dy) return {-u, contact_case::free};  // (A.29), exact
+    T s = detail::evaluate<T>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi, plain);
+    if (!(s < dy)) s = detail::next_down(dy);
+    return {s, contact_case::impact};
+  }
+  if (detail::stays_in_contact(u, dy, phi, plain)) {
+    T s = detail::evaluate<T>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi, plain);
+    if (s > dy) s = dy;
+    return {s, contact_case::contact};
+  }
+  T s = detail::evaluate<T>([](const auto&... x) { return stable_form::release(x...); }, u, dy, phi, plain);
+  if (!(s > dy)) s = detail::next_up(dy);
+  return {s, contact_case::release};
+}
+
+}  // namespace contact
