@@ -195,13 +195,55 @@ certified solve(const T& u_in, const T& dy_in, const T& phi_in, mpfr_prec_t bits
   return result;
 }
 
+// R(s) of (A.2), exactly (in rationals), then rounded to `bits` bits; s != 0.
+template <class T>
+real residual_at(const real& s, const T& u, const T& dy, const T& phi, mpfr_prec_t bits = 256) {
+  const mpfr_prec_t exact_bits = std::max<mpfr_prec_t>(bits, 4 * contact::detail::precision_of<T>());
+  const rational sq(s), uq(exactly(u, exact_bits)), dyq(exactly(dy, exact_bits)), phiq(exactly(phi, exact_bits));
+  const rational times_s = sq * sq + uq * sq + phiq * (detail_ref::floor_squared(dyq - sq) - detail_ref::floor_squared(dyq));
+  rational quotient;
+  mpq_div(quotient.get(), times_s.get(), sq.get());
+  real result(bits);
+  mpfr_set_q(result.get(), quotient.get(), MPFR_RNDN);
+  return result;
+}
+
+// R'(s) on the side of the kink where s lies (R is C1 at the kink, so either
+// side's formula serves at s = dy): 1 + phi, 1 + phi dy^2/s^2, 1, 1 + phi (1 - dy^2/s^2).
+template <class T>
+real slope_at(const real& s, const T& u, const T& dy_in, const T& phi_in, mpfr_prec_t bits = 256) {
+  (void)u;
+  const mpfr_prec_t exact_bits = std::max<mpfr_prec_t>(bits, 4 * contact::detail::precision_of<T>());
+  const real dy = exactly(dy_in, exact_bits), phi = exactly(phi_in, exact_bits);
+  real result(exact_bits), ratio(2 * exact_bits);  // 1 - dy^2/s^2 cancels: keep every bit of s
+  const bool below_kink = mpfr_cmp(s.get(), dy.get()) <= 0;
+  if (mpfr_sgn(dy.get()) > 0 && below_kink) {
+    mpfr_add_ui(result.get(), phi.get(), 1, MPFR_RNDN);
+  } else if (mpfr_sgn(dy.get()) > 0) {
+    mpfr_div(ratio.get(), dy.get(), s.get(), MPFR_RNDN);
+    mpfr_sqr(ratio.get(), ratio.get(), MPFR_RNDN);
+    mpfr_mul(result.get(), ratio.get(), phi.get(), MPFR_RNDN);
+    mpfr_add_ui(result.get(), result.get(), 1, MPFR_RNDN);
+  } else if (!below_kink || mpfr_zero_p(s.get())) {
+    mpfr_set_ui(result.get(), 1, MPFR_RNDN);
+  } else {
+    mpfr_div(ratio.get(), dy.get(), s.get(), MPFR_RNDN);
+    mpfr_sqr(ratio.get(), ratio.get(), MPFR_RNDN);
+    mpfr_ui_sub(ratio.get(), 1, ratio.get(), MPFR_RNDN);
+    mpfr_mul(result.get(), ratio.get(), phi.get(), MPFR_RNDN);
+    mpfr_add_ui(result.get(), result.get(), 1, MPFR_RNDN);
+  }
+  return result;
+}
+
 // One unit in the last place of T at x: 2^(max(e, emin) - p + 1), where
 // 2^e <= |x| < 2^(e+1), emin is T's least normal exponent and p its precision;
 // beyond T's largest finite value, the ulp of that value.
 template <class T>
 real ulp_of(const real& x) {
   const long p = contact::detail::precision_of<T>();
-  const long emin = std::numeric_limits<T>::min_exponent - 1;
+  // the software types' least exponents (-2^31) lie beyond MPFR's own range
+  const long emin = std::max<long>(std::numeric_limits<T>::min_exponent - 1, mpfr_get_emin() + 2 * p + 64);
   const long emax = std::numeric_limits<T>::max_exponent - 1;
   long e = mpfr_zero_p(x.get()) ? emin : long(mpfr_get_exp(x.get())) - 1;
   e = std::clamp(e, emin, emax);

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include <boost/math/special_functions/next.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -31,12 +34,36 @@ exact_pair<T> two_sum(const T& a, const T& b) {
   return {sum, (a - a_virtual) + (b - b_virtual)};
 }
 
+// Whether T's fma rounds once. Boost 1.74's cpp_bin_float computes fma as a
+// product and a sum, rounding twice; it gets Dekker's product instead.
+template <class T>
+struct has_fused_fma : std::true_type {};  // std::fma, fmaq (float128), mpfr_fma
+template <unsigned Digits, boost::multiprecision::backends::digit_base_type Base, class Allocator, class Exponent,
+          Exponent MinExponent, Exponent MaxExponent, boost::multiprecision::expression_template_option Templates>
+struct has_fused_fma<boost::multiprecision::number<
+    boost::multiprecision::backends::cpp_bin_float<Digits, Base, Allocator, Exponent, MinExponent, MaxExponent>, Templates>>
+    : std::false_type {};
+
 // a * b == product + error exactly, barring overflow and underflow of the error.
 template <class T>
 exact_pair<T> two_prod(const T& a, const T& b) {
   using std::fma;
-  T product = a * b;
-  return {product, fma(a, b, -product)};
+  const T product = a * b;
+  if constexpr (has_fused_fma<T>::value) {
+    return {product, fma(a, b, -product)};
+  } else {  // Veltkamp's split and Dekker's product, exact for any radix-2 T
+    using std::ldexp;
+    const T splitter = ldexp(T(1), (precision_of<T>() + 1) / 2) + 1;
+    auto split = [&](const T& x) {
+      const T scaled = splitter * x;
+      const T high = scaled - (scaled - x);
+      return exact_pair<T>{high, x - high};
+    };
+    const auto [a_high, a_low] = split(a);
+    const auto [b_high, b_low] = split(b);
+    const T error = ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
+    return {product, error};
+  }
 }
 
 // Sign (-1, 0, +1) of the exact sum of N numbers, by Shewchuk's grow-expansion:

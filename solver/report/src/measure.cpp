@@ -1,0 +1,270 @@
+#include "measure.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "contact/batch.hpp"
+#include "contact/reference.hpp"
+#include "contact/solve.hpp"
+#include "contact/types.hpp"
+#include "typed.hpp"
+
+namespace report {
+
+const type_ops& ops_float();
+const type_ops& ops_double();
+const type_ops& ops_long_double();
+const type_ops& ops_float128();
+const type_ops& ops_bin_float_50();
+const type_ops& ops_bin_float_100();
+const type_ops& ops_mpfr();
+
+const type_ops& ops_for(const std::string& type) {
+  if (type == "float") return ops_float();
+  if (type == "double") return ops_double();
+  if (type == "long_double") return ops_long_double();
+  if (type == "float128") return ops_float128();
+  if (type == "cpp_bin_float_50") return ops_bin_float_50();
+  if (type == "cpp_bin_float_100") return ops_bin_float_100();
+  return ops_mpfr();
+}
+
+namespace {
+
+// Collects Google Benchmark's per-repetition runs as ns per item (CPU time).
+class collector : public benchmark::BenchmarkReporter {
+ public:
+  std::map<std::string, long> items_per_iteration;
+  std::map<std::string, std::vector<double>> ns;
+
+  bool ReportContext(const Context&) override { return true; }
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs) {
+      if (run.run_type != Run::RT_Iteration) continue;
+      const std::string name = run.run_name.function_name;
+      if (run.error_occurred) {
+        std::fprintf(stderr, "contact-report: benchmark %s failed: %s\n", name.c_str(), run.error_message.c_str());
+        continue;
+      }
+      const double items = double(run.iterations) * double(items_per_iteration.at(name));
+      ns[name].push_back(run.cpu_accumulated_time * 1e9 / items);
+    }
+    if (!runs.empty() && runs.back().run_type == Run::RT_Iteration) {
+      const std::string name = runs.back().run_name.function_name;
+      const auto& v = ns[name];
+      if (!v.empty())
+        std::fprintf(stderr, "contact-report: timed %-48s %10.3f ns (%zu repetitions)\n", name.c_str(), v.back(), v.size());
+    }
+  }
+};
+
+void run_benchmarks(collector& c) {
+  static bool initialised = false;
+  if (!initialised) {
+    int argc = 1;
+    char name[] = "contact-report";
+    char* argv[] = {name, nullptr};
+    benchmark::Initialize(&argc, argv);
+    initialised = true;
+  }
+  benchmark::RunSpecifiedBenchmarks(&c);
+  benchmark::ClearRegisteredBenchmarks();
+}
+
+void spread(const std::vector<double>& values, double& median, double& low, double& high) {
+  if (values.empty()) {
+    median = low = high = std::nan("");
+    return;
+  }
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+  low = sorted.front();
+  high = sorted.back();
+}
+
+struct stream_arrays {
+  std::vector<double> u, dy, phi, s;
+  std::vector<int> which;
+};
+
+void register_throughput(const std::shared_ptr<stream_arrays>& d, const throughput& t, const std::string& prefix,
+                         collector& c) {
+  const std::size_t n = d->u.size();
+  auto add = [&](const std::string& what, auto body) {
+    const std::string name = prefix + what;
+    c.items_per_iteration[name] = static_cast<long>(n);
+    benchmark::RegisterBenchmark(name.c_str(), [d, n, body](benchmark::State& state) {
+      for (auto _ : state) {
+        body(*d, n);
+        benchmark::ClobberMemory();
+      }
+    })->Repetitions(t.repetitions)->MinTime(t.min_time)->MinWarmUpTime(t.min_time / 2)->Unit(benchmark::kNanosecond);
+  };
+  // The memory floor: the same bytes in and out, and no solving.
+  add("floor", [](stream_arrays& a, std::size_t n) {
+    const double* __restrict u = a.u.data();
+    const double* __restrict dy = a.dy.data();
+    const double* __restrict phi = a.phi.data();
+    double* __restrict s = a.s.data();
+    int* __restrict which = a.which.data();
+    for (std::size_t i = 0; i < n; ++i) {
+      s[i] = u[i] + dy[i] + phi[i];
+      which[i] = static_cast<int>(dy[i] > 0);
+    }
+  });
+  add("batch", [](stream_arrays& a, std::size_t n) {
+    contact::solve_batch(a.u.data(), a.dy.data(), a.phi.data(), a.s.data(), a.which.data(), static_cast<std::ptrdiff_t>(n));
+  });
+  add("stable", [](stream_arrays& a, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto r = contact::solve_stable(a.u[i], a.dy[i], a.phi[i]);
+      a.s[i] = r.s;
+      a.which[i] = static_cast<int>(r.which);
+    }
+  });
+  add("textbook", [](stream_arrays& a, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto r = contact::solve_textbook(a.u[i], a.dy[i], a.phi[i]);
+      a.s[i] = r.s;
+      a.which[i] = static_cast<int>(r.which);
+    }
+  });
+}
+
+std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
+  auto d = std::make_shared<stream_arrays>();
+  for (const auto& in : lanes) {
+    d->u.push_back(in.u);
+    d->dy.push_back(in.dy);
+    d->phi.push_back(in.phi);
+  }
+  d->s.assign(lanes.size(), 0.0);
+  d->which.assign(lanes.size(), 0);
+  return d;
+}
+
+}  // namespace
+
+scene_result measure(const scene& s, const measure_options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  scene_result result;
+  result.s = s;
+  contact::mpfr_float::default_precision(static_cast<unsigned>(s.mpfr_digits10));
+  std::fprintf(stderr, "contact-report: scene %s (%s)\n", s.name.c_str(), s.file.c_str());
+
+  const std::vector<input> inputs = generate(s);
+  result.mix.assign(s.families.size(), family_mix{});
+  for (const auto& in : inputs)
+    result.mix[static_cast<std::size_t>(in.family)].cases[static_cast<int>(contact::solve_stable(in.u, in.dy, in.phi).which)]++;
+
+  // Accuracy, run by run.
+  for (const run& r : s.runs) {
+    if (std::find(r.checks.begin(), r.checks.end(), check::accuracy) == r.checks.end()) continue;
+    std::vector<input> subset;
+    std::vector<long> taken(s.families.size(), 0);
+    for (const auto& in : inputs)
+      if (r.samples < 0 || taken[static_cast<std::size_t>(in.family)]++ < r.samples) subset.push_back(in);
+    int digits = 53;
+    for (const auto& type : r.types) digits = std::max(digits, ops_for(type).digits());
+    const mpfr_prec_t bits = std::max(256, 4 * digits);
+    reference_list references;
+    references.reserve(subset.size());
+    {
+      progress bar("scene " + s.name + ": certified references (" + std::to_string(bits) + " bits)",
+                   static_cast<long>(subset.size()));
+      long uncertified = 0;
+      for (std::size_t i = 0; i < subset.size(); ++i) {
+        references.push_back(contact::reference::solve<double>(subset[i].u, subset[i].dy, subset[i].phi, bits));
+        if (!references.back().is_certified) ++uncertified;
+        if ((i & 1023) == 0) bar.update(static_cast<long>(i));
+      }
+      if (uncertified)
+        std::fprintf(stderr, "contact-report: warning: %ld references of scene %s are not certified\n", uncertified,
+                     s.name.c_str());
+    }
+    for (const auto& type : r.types) {
+      progress bar("scene " + s.name + ": accuracy " + type, static_cast<long>(subset.size()));
+      ops_for(type).accuracy(r, subset, references, s.families.size(), options.raw, bar, result.accuracy);
+    }
+  }
+
+  // Timings: one Google Benchmark per (run, type, method), over a shuffled array of the scene's inputs.
+  {
+    collector c;
+    std::vector<std::pair<std::string, timing_result>> registered;
+    for (std::size_t k = 0; k < s.runs.size(); ++k) {
+      const run& r = s.runs[k];
+      if (std::find(r.checks.begin(), r.checks.end(), check::timing) == r.checks.end()) continue;
+      const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
+      const std::string prefix = s.name + "|" + std::to_string(k) + "|";
+      for (const auto& type : r.types) {
+        ops_for(type).register_timings(r, lanes, prefix);
+        for (method m : r.methods) {
+          const std::string name = prefix + type + "|" + name_of(m);
+          c.items_per_iteration[name] = static_cast<long>(lanes.size());
+          timing_result t;
+          t.type = type;
+          t.algorithm = name_of(m);
+          t.inputs = static_cast<long>(lanes.size());
+          registered.emplace_back(name, t);
+        }
+      }
+    }
+    if (!registered.empty()) {
+      run_benchmarks(c);
+      for (auto& [name, t] : registered) {
+        t.ns = c.ns[name];
+        spread(t.ns, t.median, t.min, t.max);
+        result.timing.push_back(t);
+      }
+    }
+  }
+
+  // Batch throughput against the scalar paths and the memory floor.
+  if (s.batch_throughput) {
+    const throughput& t = *s.batch_throughput;
+    for (int pass = 0; pass < 2; ++pass) {
+      const long lanes = pass == 0 ? t.lanes : t.cache_lanes;
+      collector c;
+      const std::string prefix = s.name + "|throughput|" + std::to_string(lanes) + "|";
+      auto data = stream_data(mixed(inputs, lanes, s.seed + 1000 + static_cast<std::uint64_t>(pass)));
+      register_throughput(data, t, prefix, c);
+      run_benchmarks(c);
+      for (const char* what : {"floor", "batch", "stable", "textbook"}) {
+        throughput_result row;
+        row.what = what;
+        row.lanes = lanes;
+        row.ns = c.ns[prefix + what];
+        spread(row.ns, row.median, row.min, row.max);
+        row.gigabytes_per_second = 36.0 / row.median;
+        (pass == 0 ? result.throughput : result.throughput_cache).push_back(row);
+      }
+    }
+  }
+
+  // The oscillator.
+  for (const run& r : s.runs) {
+    if (std::find(r.checks.begin(), r.checks.end(), check::energy) == r.checks.end()) continue;
+    for (const auto& type : r.types)
+      for (method m : r.methods) {
+        const auto t0 = std::chrono::steady_clock::now();
+        result.energy.push_back(ops_for(type).simulate(*s.energy, m));
+        const auto& e = result.energy.back();
+        std::fprintf(stderr, "contact-report: scene %s: oscillator %s %s: max energy error %.3g (%.1f s)\n",
+                     s.name.c_str(), type.c_str(), name_of(m).c_str(), e.max_exact,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "contact-report: scene %s done in %.1f s\n", s.name.c_str(), result.seconds);
+  return result;
+}
+
+}  // namespace report

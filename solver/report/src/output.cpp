@@ -1,0 +1,577 @@
+#include "output.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "inputs.hpp"
+
+namespace report {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+std::string format_ulp(double ulps) {
+  if (std::isnan(ulps)) return "nan";
+  if (std::isinf(ulps)) return "inf";
+  if (ulps < 0) return "—";
+  if (ulps > 0 && ulps < 1e-3) return "<0.001";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", ulps);
+  return buffer;
+}
+
+std::string format_ns(double ns) {
+  if (!std::isfinite(ns)) return "—";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, ns < 100 ? "%.3g" : "%.0f", ns);
+  return buffer;
+}
+
+std::string format_ratio(double ratio) {
+  if (!std::isfinite(ratio)) return "—";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", ratio);
+  return buffer;
+}
+
+std::string format_energy(double relative) {
+  if (std::isnan(relative)) return "nan";
+  if (std::isinf(relative)) return "inf (blew up)";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2e", relative);
+  return buffer;
+}
+
+namespace {
+
+json number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return x;
+}
+
+std::string csv_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+const char* case_names[] = {"invalid", "free", "impact", "contact", "release"};
+
+const timing_result* timing_of(const scene_result& r, const std::string& type, const std::string& algorithm) {
+  for (const auto& t : r.timing)
+    if (t.type == type && t.algorithm == algorithm) return &t;
+  return nullptr;
+}
+
+const accuracy_result* accuracy_of(const scene_result& r, const std::string& type, const std::string& algorithm) {
+  for (const auto& a : r.accuracy)
+    if (a.type == type && a.algorithm == algorithm) return &a;
+  return nullptr;
+}
+
+const throughput_result* throughput_of(const std::vector<throughput_result>& rows, const std::string& what) {
+  for (const auto& t : rows)
+    if (t.what == what) return &t;
+  return nullptr;
+}
+
+// The (type, algorithm) rows of a scene's table, in the order of its runs.
+std::vector<std::pair<std::string, std::string>> rows_of(const scene_result& r) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  for (const run& x : r.s.runs) {
+    if (std::find(x.checks.begin(), x.checks.end(), check::energy) != x.checks.end() && x.checks.size() == 1) continue;
+    for (const auto& type : x.types)
+      for (method m : x.methods) {
+        std::pair<std::string, std::string> row{type, name_of(m)};
+        if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
+      }
+  }
+  return rows;
+}
+
+}  // namespace
+
+// "N", or "N (k overflow)" when k of the N infinite results are right.
+std::string format_inf(const accuracy_result& a) {
+  if (a.inf_overflow == 0) return std::to_string(a.inf);
+  return std::to_string(a.inf) + " (" + (a.inf_overflow == a.inf ? std::string("all") : std::to_string(a.inf_overflow)) +
+         " overflow)";
+}
+
+namespace {
+
+std::string parameters_of(const family& f) {
+  std::string out;
+  for (const auto& [name, d] : f.parameters) out += (out.empty() ? "" : ", ") + name + " " + describe(d);
+  if (f.ulps) out += ", ulps " + std::to_string(f.ulps);
+  return out;
+}
+
+std::string plot_link(const std::string& name, const std::vector<std::string>& made, const std::string& caption) {
+  if (std::find(made.begin(), made.end(), name) == made.end()) return "";
+  return "![" + caption + "](plots/" + name + ".png)\n\n[" + caption + " (SVG)](plots/" + name + ".svg)\n\n";
+}
+
+void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, json& headline) {
+  std::vector<std::string> double_algorithms;
+  for (method m : all_methods)
+    for (const auto& r : scenes)
+      if (accuracy_of(r, "double", name_of(m)) || timing_of(r, "double", name_of(m))) {
+        double_algorithms.push_back(name_of(m));
+        break;
+      }
+  std::vector<const scene_result*> with_runs;
+  for (const auto& r : scenes)
+    if (!r.accuracy.empty() || !r.timing.empty()) with_runs.push_back(&r);
+
+  if (!double_algorithms.empty() && !with_runs.empty()) {
+    md << "### Accuracy in double: maximum ulp error against the certified reference\n\n| algorithm |";
+    for (const auto* r : with_runs) md << " " << r->s.name << " |";
+    md << " worst |\n|---|";
+    for (std::size_t i = 0; i <= with_runs.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const auto& algorithm : double_algorithms) {
+      md << "| " << algorithm << " |";
+      double worst = -1;
+      json per_scene = json::object();
+      for (const auto* r : with_runs) {
+        const auto* a = accuracy_of(*r, "double", algorithm);
+        md << " " << (a ? format_ulp(a->ulps.max) : "—") << " |";
+        if (a) {
+          worst = std::max(worst, a->ulps.max);
+          per_scene[r->s.name] = number(a->ulps.max);
+        }
+      }
+      md << " **" << format_ulp(worst) << "** |\n";
+      headline["double_max_ulp"][algorithm] = {{"worst", number(worst)}, {"per_scene", per_scene}};
+    }
+    md << "\n### Speed in double: ns per solve (median over repetitions, CPU time)\n\n| algorithm |";
+    for (const auto* r : with_runs) md << " " << r->s.name << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < with_runs.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const auto& algorithm : double_algorithms) {
+      md << "| " << algorithm << " |";
+      json per_scene = json::object();
+      for (const auto* r : with_runs) {
+        const auto* t = timing_of(*r, "double", algorithm);
+        md << " " << (t ? format_ns(t->median) : "—") << " |";
+        if (t) per_scene[r->s.name] = number(t->median);
+      }
+      md << "\n";
+      headline["double_ns_per_solve"][algorithm] = per_scene;
+    }
+    md << "\n";
+  }
+
+  // Wider types: the stable form in each precision.
+  std::vector<std::string> wide;
+  for (const auto& type : type_names)
+    if (type != "double")
+      for (const auto* r : with_runs)
+        if (accuracy_of(*r, type, "stable") || timing_of(*r, type, "stable")) {
+          wide.push_back(type);
+          break;
+        }
+  if (!wide.empty()) {
+    md << "### What each precision costs: the stable form\n\n"
+          "Worst maximum error over the scenes, in ulps of the type itself and after rounding the result to "
+          "double; ns per solve in each scene.\n\n| type | max ulp (own) | max ulp as double |";
+    for (const auto* r : with_runs) md << " ns " << r->s.name << " |";
+    md << "\n|---|---:|---:|";
+    for (std::size_t i = 0; i < with_runs.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const auto& type : wide) {
+      double worst = -1, worst_double = -1;
+      json ns = json::object();
+      std::string cells;
+      for (const auto* r : with_runs) {
+        if (const auto* a = accuracy_of(*r, type, "stable")) {
+          worst = std::max(worst, a->ulps.max);
+          worst_double = std::max(worst_double, a->max_ulp_as_double);
+        }
+        const auto* t = timing_of(*r, type, "stable");
+        cells += " " + (t ? format_ns(t->median) : std::string("—")) + " |";
+        if (t) ns[r->s.name] = number(t->median);
+      }
+      md << "| " << type << " | " << format_ulp(worst) << " | " << format_ulp(worst_double) << " |" << cells << "\n";
+      headline["stable_by_type"][type] = {
+          {"max_ulp", number(worst)}, {"max_ulp_as_double", number(worst_double)}, {"ns_per_solve", ns}};
+    }
+    md << "\n";
+  }
+
+  for (const auto& r : scenes) {
+    if (r.throughput.empty()) continue;
+    md << "### Batch throughput (scene " << r.s.name << ", double, mixed cases)\n\n"
+       << "| lanes | floor ns/lane | batch | stable | textbook | batch speed-up over textbook | over stable | batch / floor |\n"
+       << "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto* rows : {&r.throughput, &r.throughput_cache}) {
+      const auto *floor = throughput_of(*rows, "floor"), *batch = throughput_of(*rows, "batch"),
+                 *stable = throughput_of(*rows, "stable"), *textbook = throughput_of(*rows, "textbook");
+      if (!floor || !batch || !stable || !textbook) continue;
+      md << "| " << floor->lanes << " | " << format_ns(floor->median) << " | " << format_ns(batch->median) << " | "
+         << format_ns(stable->median) << " | " << format_ns(textbook->median) << " | **"
+         << format_ratio(textbook->median / batch->median) << "** | " << format_ratio(stable->median / batch->median)
+         << " | **" << format_ratio(batch->median / floor->median) << "** |\n";
+      headline["batch"][rows == &r.throughput ? "streamed" : "in_cache"] = {
+          {"scene", r.s.name},
+          {"lanes", floor->lanes},
+          {"floor_ns", number(floor->median)},
+          {"batch_ns", number(batch->median)},
+          {"stable_ns", number(stable->median)},
+          {"textbook_ns", number(textbook->median)},
+          {"speedup_over_textbook", number(textbook->median / batch->median)},
+          {"speedup_over_stable", number(stable->median / batch->median)},
+          {"batch_to_floor", number(batch->median / floor->median)}};
+    }
+    md << "\nTargets of issue 5: batch at least 8 times faster than scalar textbook, and within 1.5 times the floor.\n\n";
+  }
+
+  for (const auto& r : scenes) {
+    if (r.energy.empty()) continue;
+    md << "### Energy conservation (scene " << r.s.name << "): maximum relative energy error\n\n"
+       << "| type | algorithm | max abs(H[n] - H[0]) / H[0] |\n|---|---|---:|\n";
+    for (const auto& e : r.energy) {
+      md << "| " << e.type << " | " << e.algorithm << " | " << format_energy(e.max_exact) << " |\n";
+      headline["energy"][e.type][e.algorithm] = number(e.max_exact);
+    }
+    md << "\n";
+  }
+}
+
+void write_method(std::ostream& md, const std::vector<scene_result>& scenes, const run_info& info) {
+  md << "## Method\n\n"
+        "- **Reference.** Every input is solved by `contact::reference::solve` (MPFR and GMP): the case is decided "
+        "in exact rational arithmetic, the root computed at 256 bits or more (four times the widest type's precision "
+        "in the run) and certified by the sign change of the exact residual of (A.2) around it. An error is "
+        "|computed - exact| in units in the last place of the type at the exact root (`reference::ulp_error`); a "
+        "correctly rounded result is at most 0.5 ulp off. The inputs are doubles, so every type solves exactly the "
+        "same numbers.\n"
+        "- **Statistics.** Maximum, 99th percentile and median (nearest rank) of the ulp errors of all samples of a "
+        "run; a NaN result counts as an infinite error and is counted under NaN. *inf* counts infinite results; "
+        "\"(k overflow)\" says how many of them are right, because the exact root rounds to infinity in the type. *compl.* counts complementarity violations: a "
+        "result that does not lie on the side of dy that its own case claims (`lies_on_its_side`). *wrong case* "
+        "counts results whose case differs from the exact one.\n"
+        "- **Timing.** Google Benchmark, in process, single-threaded: one benchmark per (type, algorithm) loops over "
+        "an array of the scene's inputs, shuffled so that the cases mix (its length is in the table). Each is warmed "
+        "(Google Benchmark's warm-up and iteration calibration), then repeated; the table gives the median over the "
+        "repetitions of CPU nanoseconds per solve and its spread (minimum to maximum).\n"
+        "- **Peers.** `boost_quadratic` is Boost.Math `tools::quadratic_roots` (present in Boost 1.74, "
+        "`boost/math/tools/roots.hpp`; it uses an fma-corrected discriminant for built-in types and the naive one for "
+        "multiprecision types) and `eigen_companion` is Eigen 3.4's `PolynomialSolver` (eigenvalues of the balanced "
+        "companion matrix), each applied to the quadratic of the case: (A.9) (1+phi) s^2 + (u - 2 phi dy) s + phi "
+        "dy^2 = 0 for impact (smaller root), (A.23) s^2 + u s - phi dy^2 = 0 for release (larger root) and the linear "
+        "(A.18) for contact; the case is decided by the printed criteria, as the textbook path does.\n"
+        "- **newton** is the library's safeguarded Newton iteration on the residual (the baseline the closed form "
+        "replaces); **textbook** is the appendix's summary with its misprints corrected and nothing else; **stable** "
+        "is `contact::solve_stable`; **batch** is `contact::solve_batch` (`contact/batch.hpp`), whose results equal "
+        "stable's bit for bit (tested).\n"
+        "- **Wider types** (long double, float128, cpp_bin_float_50/100, mpfr) run the stable form; mpfr at the "
+        "scene's `mpfr_digits10` decimal digits.\n"
+        "- **Energy.** The oscillator of context.md (mass, spring, one-sided barrier, discrete-gradient midpoint "
+        "scheme, dt = 1/sample rate) is stepped in each type with each algorithm; H is evaluated exactly (MPFR) from "
+        "the parameters and state as the type holds them, so the figure is the drift of the simulation, not the "
+        "rounding of H. The energy error with H evaluated in the type itself is in results.csv/json.\n"
+        "- **Build.** " << info.compiler << ", flags `" << info.flags << "` for every algorithm alike.\n\n";
+  (void)scenes;
+}
+
+void write_scene(std::ostream& md, const scene_result& r, const std::vector<std::string>& plots) {
+  const scene& s = r.s;
+  md << "## Scene " << s.name << ": " << s.title << "\n\n";
+  md << "File `" << fs::path(s.file).filename().string() << "`, seed " << s.seed << ", measured in "
+     << format_ratio(r.seconds) << " s.";
+  if (!s.description.empty()) md << " " << s.description;
+  md << "\n\n";
+  if (!s.families.empty()) {
+    md << "| family | generator | samples | parameters | free | impact | contact | release |\n"
+          "|---|---|---:|---|---:|---:|---:|---:|\n";
+    for (std::size_t i = 0; i < s.families.size(); ++i) {
+      const auto& f = s.families[i];
+      md << "| " << f.name << " | " << f.generator << " | " << f.samples << " | " << parameters_of(f) << " |";
+      for (int c = 1; c <= 4; ++c) md << " " << r.mix[i].cases[c] << " |";
+      md << "\n";
+    }
+    md << "\nCases by the exact criteria.\n\n";
+  }
+  const auto rows = rows_of(r);
+  if (!rows.empty()) {
+    bool as_double = false;
+    for (const auto& a : r.accuracy) as_double = as_double || a.max_ulp_as_double >= 0;
+    md << "| type | algorithm | samples | max ulp | p99 ulp | median ulp |" << (as_double ? " max ulp as double |" : "")
+       << " NaN | inf | compl. | wrong case | ns/solve | spread | inputs × reps |\n|---|---|---:|---:|---:|---:|"
+       << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---|---:|\n";
+    for (const auto& [type, algorithm] : rows) {
+      const auto* a = accuracy_of(r, type, algorithm);
+      const auto* t = timing_of(r, type, algorithm);
+      md << "| " << type << " | " << algorithm << " | ";
+      if (a) {
+        md << a->samples << " | " << format_ulp(a->ulps.max) << " | " << format_ulp(a->ulps.p99) << " | "
+           << format_ulp(a->ulps.median) << " | ";
+        if (as_double) md << format_ulp(a->max_ulp_as_double) << " | ";
+        md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | ";
+      } else {
+        md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | ";
+      }
+      if (t && !t->ns.empty())
+        md << format_ns(t->median) << " | " << format_ns(t->min) << "–" << format_ns(t->max) << " | " << t->inputs << " × "
+           << t->ns.size() << " |\n";
+      else
+        md << "— | — | — |\n";
+    }
+    md << "\n";
+    if (!r.accuracy.empty() && s.families.size() > 1) {
+      md << "Maximum ulp error by family:\n\n| type | algorithm |";
+      for (const auto& f : s.families) md << " " << f.name << " |";
+      md << "\n|---|---|";
+      for (std::size_t i = 0; i < s.families.size(); ++i) md << "---:|";
+      md << "\n";
+      for (const auto& a : r.accuracy) {
+        md << "| " << a.type << " | " << a.algorithm << " |";
+        for (double v : a.family_max) md << " " << format_ulp(v) << " |";
+        md << "\n";
+      }
+      md << "\n";
+    }
+    md << plot_link("pareto_" + s.name, plots, "Error against run time, scene " + s.name);
+  }
+  if (!r.throughput.empty()) {
+    md << "Batch throughput (double, mixed cases; ns per lane, median of " << s.batch_throughput->repetitions
+       << " repetitions, spread min–max; 36 bytes per lane):\n\n"
+          "| lanes | path | ns/lane | spread | GB/s |\n|---:|---|---:|---|---:|\n";
+    for (const auto* rows : {&r.throughput, &r.throughput_cache})
+      for (const auto& t : *rows)
+        md << "| " << t.lanes << " | " << t.what << " | " << format_ns(t.median) << " | " << format_ns(t.min) << "–"
+           << format_ns(t.max) << " | " << format_ratio(t.gigabytes_per_second) << " |\n";
+    md << "\nThe floor streams the same bytes (reads u, dy, phi; writes s and the case) and solves nothing.\n\n";
+  }
+  if (!r.energy.empty()) {
+    const oscillator& o = *s.energy;
+    md << "Oscillator: m = " << o.mass << " kg, K = " << o.spring << " N/m, barrier at h_b = " << o.barrier_height
+       << " m with k_b = " << o.barrier_stiffness << " N/m, sample rate " << o.sample_rate << " Hz, " << o.duration
+       << " s (" << r.energy.front().steps << " steps), y0 = " << o.initial_displacement << " m, v0 = "
+       << o.initial_velocity << " m/s.\n\n"
+       << "| type | algorithm | steps in contact | max rel. energy error (exact H) | final | max with H in the type |\n"
+          "|---|---|---:|---:|---:|---:|\n";
+    for (const auto& e : r.energy)
+      md << "| " << e.type << " | " << e.algorithm << " | " << e.contact_steps << " | " << format_energy(e.max_exact)
+         << " | " << format_energy(e.final_exact) << " | " << format_energy(e.max_in_type) << " |\n";
+    md << "\n";
+    std::set<std::string> types;
+    for (const auto& e : r.energy) types.insert(e.type);
+    for (const auto& type : types)
+      md << plot_link("energy_" + s.name + "_" + type, plots, "Relative energy error, " + type + ", scene " + s.name);
+    md << plot_link("energy_" + s.name + "_types", plots, "Relative energy error of the stable form by type, scene " + s.name);
+  }
+}
+
+json scene_json(const scene_result& r) {
+  const scene& s = r.s;
+  json j;
+  j["name"] = s.name;
+  j["title"] = s.title;
+  j["file"] = s.file;
+  j["description"] = s.description;
+  j["seed"] = s.seed;
+  j["seconds"] = r.seconds;
+  j["families"] = json::array();
+  for (std::size_t i = 0; i < s.families.size(); ++i) {
+    const auto& f = s.families[i];
+    json cases;
+    for (int c = 0; c <= 4; ++c) cases[case_names[c]] = r.mix[i].cases[c];
+    j["families"].push_back(
+        {{"name", f.name}, {"generator", f.generator}, {"samples", f.samples}, {"parameters", parameters_of(f)}, {"cases", cases}});
+  }
+  j["accuracy"] = json::array();
+  for (const auto& a : r.accuracy) {
+    json family_max;
+    for (std::size_t i = 0; i < a.family_max.size(); ++i) family_max[s.families[i].name] = number(a.family_max[i]);
+    json histogram;
+    for (int b = 0; b < histogram_bins; ++b)
+      if (a.histogram[static_cast<std::size_t>(b)]) histogram[histogram_label(b)] = a.histogram[static_cast<std::size_t>(b)];
+    j["accuracy"].push_back({{"type", a.type},
+                             {"algorithm", a.algorithm},
+                             {"samples", a.samples},
+                             {"max_ulp", number(a.ulps.max)},
+                             {"p99_ulp", number(a.ulps.p99)},
+                             {"median_ulp", number(a.ulps.median)},
+                             {"max_ulp_as_double", a.max_ulp_as_double < 0 ? json(nullptr) : number(a.max_ulp_as_double)},
+                             {"nan", a.nan},
+                             {"inf", a.inf},
+                             {"inf_overflow", a.inf_overflow},
+                             {"complementarity_violations", a.complementarity},
+                             {"wrong_case", a.wrong_case},
+                             {"reference_bits", a.reference_bits},
+                             {"family_max_ulp", family_max},
+                             {"histogram", histogram}});
+  }
+  j["timing"] = json::array();
+  for (const auto& t : r.timing) {
+    json reps = json::array();
+    for (double x : t.ns) reps.push_back(number(x));
+    j["timing"].push_back({{"type", t.type},
+                           {"algorithm", t.algorithm},
+                           {"inputs", t.inputs},
+                           {"ns_median", number(t.median)},
+                           {"ns_min", number(t.min)},
+                           {"ns_max", number(t.max)},
+                           {"ns_repetitions", reps}});
+  }
+  j["throughput"] = json::array();
+  for (const auto* rows : {&r.throughput, &r.throughput_cache})
+    for (const auto& t : *rows) {
+      json reps = json::array();
+      for (double x : t.ns) reps.push_back(number(x));
+      j["throughput"].push_back({{"lanes", t.lanes},
+                                 {"path", t.what},
+                                 {"ns_median", number(t.median)},
+                                 {"ns_min", number(t.min)},
+                                 {"ns_max", number(t.max)},
+                                 {"gigabytes_per_second", number(t.gigabytes_per_second)},
+                                 {"ns_repetitions", reps}});
+    }
+  j["energy"] = json::array();
+  for (const auto& e : r.energy)
+    j["energy"].push_back({{"type", e.type},
+                           {"algorithm", e.algorithm},
+                           {"steps", e.steps},
+                           {"contact_steps", e.contact_steps},
+                           {"max_relative_error", number(e.max_exact)},
+                           {"final_relative_error", number(e.final_exact)},
+                           {"max_relative_error_in_type", number(e.max_in_type)},
+                           {"finite", e.finite}});
+  return j;
+}
+
+void write_csv(std::ostream& csv, const std::vector<scene_result>& scenes) {
+  csv << "scene,check,type,algorithm,metric,value\n";
+  for (const auto& r : scenes) {
+    const std::string& sn = r.s.name;
+    auto row = [&](const char* check, const std::string& type, const std::string& algorithm, const std::string& metric,
+                   const std::string& value) {
+      csv << sn << "," << check << "," << type << "," << algorithm << "," << metric << "," << value << "\n";
+    };
+    for (const auto& a : r.accuracy) {
+      row("accuracy", a.type, a.algorithm, "samples", std::to_string(a.samples));
+      row("accuracy", a.type, a.algorithm, "max_ulp", csv_number(a.ulps.max));
+      row("accuracy", a.type, a.algorithm, "p99_ulp", csv_number(a.ulps.p99));
+      row("accuracy", a.type, a.algorithm, "median_ulp", csv_number(a.ulps.median));
+      if (a.max_ulp_as_double >= 0) row("accuracy", a.type, a.algorithm, "max_ulp_as_double", csv_number(a.max_ulp_as_double));
+      row("accuracy", a.type, a.algorithm, "nan", std::to_string(a.nan));
+      row("accuracy", a.type, a.algorithm, "inf", std::to_string(a.inf));
+      row("accuracy", a.type, a.algorithm, "inf_overflow", std::to_string(a.inf_overflow));
+      row("accuracy", a.type, a.algorithm, "complementarity_violations", std::to_string(a.complementarity));
+      row("accuracy", a.type, a.algorithm, "wrong_case", std::to_string(a.wrong_case));
+      for (std::size_t i = 0; i < a.family_max.size(); ++i)
+        if (a.family_max[i] >= 0)
+          row("accuracy", a.type, a.algorithm, "max_ulp[" + r.s.families[i].name + "]", csv_number(a.family_max[i]));
+    }
+    for (const auto& t : r.timing) {
+      row("timing", t.type, t.algorithm, "inputs", std::to_string(t.inputs));
+      row("timing", t.type, t.algorithm, "repetitions", std::to_string(t.ns.size()));
+      row("timing", t.type, t.algorithm, "ns_median", csv_number(t.median));
+      row("timing", t.type, t.algorithm, "ns_min", csv_number(t.min));
+      row("timing", t.type, t.algorithm, "ns_max", csv_number(t.max));
+    }
+    for (const auto* rows : {&r.throughput, &r.throughput_cache})
+      for (const auto& t : *rows) {
+        const std::string check = "throughput@" + std::to_string(t.lanes);
+        row(check.c_str(), "double", t.what, "ns_median", csv_number(t.median));
+        row(check.c_str(), "double", t.what, "ns_min", csv_number(t.min));
+        row(check.c_str(), "double", t.what, "ns_max", csv_number(t.max));
+        row(check.c_str(), "double", t.what, "gigabytes_per_second", csv_number(t.gigabytes_per_second));
+      }
+    for (const auto& e : r.energy) {
+      row("energy", e.type, e.algorithm, "steps", std::to_string(e.steps));
+      row("energy", e.type, e.algorithm, "contact_steps", std::to_string(e.contact_steps));
+      row("energy", e.type, e.algorithm, "max_relative_error", csv_number(e.max_exact));
+      row("energy", e.type, e.algorithm, "final_relative_error", csv_number(e.final_exact));
+      row("energy", e.type, e.algorithm, "max_relative_error_in_type", csv_number(e.max_in_type));
+    }
+  }
+}
+
+void write_raw(const fs::path& directory, const std::vector<scene_result>& scenes) {
+  for (const auto& r : scenes) {
+    const fs::path dir = directory / "raw" / r.s.name;
+    fs::create_directories(dir);
+    for (const auto& a : r.accuracy) {
+      std::ofstream out(dir / ("accuracy_" + a.type + "_" + a.algorithm + ".csv"));
+      out << "index,family,u,dy,phi,s,case,ulp_error\n";
+      char buffer[200];
+      for (std::size_t i = 0; i < a.errors.size(); ++i) {
+        const auto& in = a.inputs[i];
+        std::snprintf(buffer, sizeof buffer, "%zu,%s,%a,%a,%a,", i, r.s.families[static_cast<std::size_t>(in.family)].name.c_str(),
+                      in.u, in.dy, in.phi);
+        out << buffer << a.s_text[i] << "," << a.which[i] << "," << csv_number(a.errors[i]) << "\n";
+      }
+    }
+    for (const auto& t : r.timing) {
+      std::ofstream out(dir / ("timing_" + t.type + "_" + t.algorithm + ".csv"));
+      out << "repetition,ns_per_solve\n";
+      for (std::size_t i = 0; i < t.ns.size(); ++i) out << i << "," << csv_number(t.ns[i]) << "\n";
+    }
+  }
+}
+
+}  // namespace
+
+bool write_report(const std::string& directory, const std::vector<scene_result>& scenes, const run_info& info, bool raw) {
+  const fs::path dir(directory);
+  fs::create_directories(dir);
+  std::vector<std::string> plots;
+  const bool plotted = write_plots(directory, scenes, plots);
+
+  std::ostringstream md;
+  json headline = json::object();
+  md << "# Precision and speed of the closed-form contact step (A.2)\n\n"
+     << "Generated by `" << info.command << "` at " << info.started << " in " << format_ratio(info.seconds)
+     << " s on " << info.cpu << ".\n\n"
+     << "Every figure below is measured in this run; `results.csv` and `results.json` hold the same figures "
+        "with full precision.\n\n## Headline figures\n\n";
+  std::ostringstream head;
+  write_headline(head, scenes, headline);
+  md << head.str();
+  if (!plotted) md << "_gnuplot failed or is missing: no plots._\n\n";
+  write_method(md, scenes, info);
+  for (const auto& r : scenes) write_scene(md, r, plots);
+  {
+    std::set<std::string> listed;
+    std::string hist;
+    for (const auto& name : plots)
+      if (name.rfind("hist_", 0) == 0) hist += plot_link(name, plots, "Error histogram, " + name.substr(5));
+    if (!hist.empty()) md << "## Error histograms\n\nFraction of samples per ulp-error bin, one line per scene.\n\n" << hist;
+  }
+  std::ofstream(dir / "report.md") << md.str();
+
+  json j;
+  j["generator"] = "contact-report";
+  j["command"] = info.command;
+  j["started"] = info.started;
+  j["seconds"] = info.seconds;
+  j["machine"] = {{"cpu", info.cpu}, {"compiler", info.compiler}, {"flags", info.flags}};
+  j["headline"] = headline;
+  j["scenes"] = json::array();
+  for (const auto& r : scenes) j["scenes"].push_back(scene_json(r));
+  j["plots"] = plots;
+  std::ofstream(dir / "results.json") << j.dump(1) << "\n";
+
+  std::ofstream csv(dir / "results.csv");
+  write_csv(csv, scenes);
+  if (raw) write_raw(dir, scenes);
+  return plotted;
+}
+
+}  // namespace report

@@ -1,0 +1,33 @@
+// report.md, results.csv, results.json, the raw measurements and the plots.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "results.hpp"
+
+namespace report {
+
+struct run_info {
+  std::string command;     // the command line
+  std::string started;     // UTC, ISO 8601
+  double seconds = 0;      // wall time of all scenes
+  std::string cpu, compiler, flags;
+};
+
+// The number formats of report.md (the tests use them to compare figures).
+std::string format_ulp(double ulps);
+std::string format_ns(double ns);
+std::string format_ratio(double ratio);
+std::string format_energy(double relative);
+std::string format_inf(const accuracy_result& a);
+
+// Writes everything into `directory` (created if need be). Returns false if
+// gnuplot failed (the rest is written anyway).
+bool write_report(const std::string& directory, const std::vector<scene_result>& scenes, const run_info& info,
+                  bool raw);
+
+// Writes plots/*.gp and *.dat and runs gnuplot on them; false if it failed.
+bool write_plots(const std::string& directory, const std::vector<scene_result>& scenes, std::vector<std::string>& made);
+
+}  // namespace report

@@ -1,0 +1,98 @@
+// What a scene's measurements produce; output.cpp writes them out.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "inputs.hpp"
+#include "scene.hpp"
+
+namespace report {
+
+// Error histogram bins: [0] exactly 0, [1] (0, 0.5], [2] (0.5, 1], then
+// (2^(k-3), 2^(k-2)] for k = 3 .. 62, [63] above 2^60 (including infinity),
+// [64] NaN.
+inline constexpr int histogram_bins = 65;
+int histogram_bin(double ulps);
+std::string histogram_label(int bin);
+
+struct summary {  // of a set of ulp errors; NaN counts as infinitely wrong
+  long count = 0;
+  double max = 0, p99 = 0, median = 0;
+};
+// Nearest-rank percentiles (the value at rank ceil(q n)).
+summary summarize(std::vector<double> errors);
+
+struct accuracy_result {
+  std::string type, algorithm;
+  long samples = 0;
+  summary ulps;
+  double max_ulp_as_double = -1;  // the result rounded to double, in ulps of double (-1: not measured)
+  long nan = 0, inf = 0, complementarity = 0, wrong_case = 0;
+  long inf_overflow = 0;  // infinite results that are right: the exact root rounds to infinity in the type
+  std::vector<double> family_max;  // max ulp per family of the scene (-1: family not in this run)
+  std::vector<long> histogram = std::vector<long>(histogram_bins, 0);
+  int reference_bits = 0;
+  // the raw measurements (kept only with --raw)
+  std::vector<double> errors;
+  std::vector<int> family_of, which;
+  std::vector<std::string> s_text;
+  std::vector<input> inputs;
+};
+
+struct timing_result {
+  std::string type, algorithm;
+  long inputs = 0;  // length of the array one iteration solves
+  std::vector<double> ns;  // ns per solve, one per repetition (CPU time)
+  double median = 0, min = 0, max = 0;
+};
+
+struct throughput_result {
+  std::string what;  // floor, batch, stable, textbook
+  long lanes = 0;
+  std::vector<double> ns;  // ns per lane, one per repetition (CPU time)
+  double median = 0, min = 0, max = 0;
+  double gigabytes_per_second = 0;  // 36 bytes per lane (3 doubles in, a double and an int out)
+};
+
+struct energy_result {
+  std::string type, algorithm;
+  long steps = 0;
+  double max_exact = 0;    // max |H[n] - H[0]| / H[0], H evaluated exactly (MPFR) from the state in T
+  double max_in_type = 0;  // the same with H evaluated in T
+  double final_exact = 0;
+  long contact_steps = 0;  // steps with dy > 0 or s < dy, i.e. barrier force acting
+  bool finite = true;      // the state stayed finite
+  std::vector<double> time, envelope;  // max error within each plot interval, exact H
+};
+
+struct family_mix {
+  long cases[5] = {0, 0, 0, 0, 0};  // invalid, free, impact, contact, release (exact criteria)
+};
+
+struct scene_result {
+  scene s;
+  std::vector<family_mix> mix;  // per family
+  std::vector<accuracy_result> accuracy;
+  std::vector<timing_result> timing;
+  std::vector<throughput_result> throughput;
+  std::vector<throughput_result> throughput_cache;  // the same at cache_lanes
+  std::vector<energy_result> energy;
+  double seconds = 0;
+};
+
+// Progress lines on stderr, at most one every two seconds per task.
+class progress {
+ public:
+  progress(std::string label, long total);
+  void update(long done);
+  void finish();
+
+ private:
+  std::string label_;
+  long total_;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+}  // namespace report

@@ -1,0 +1,112 @@
+// Scenes: the declarative TOML files of scenes/ that say which inputs to
+// generate, which types and algorithms to run on them and which checks to make.
+// The grammar is documented in scenes/README.md; every key is checked, unknown
+// keys are errors, and every error names the file and line.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace report {
+
+// "FILE:LINE: reason" (LINE is 0 when the file itself cannot be read).
+class scene_error : public std::runtime_error {
+ public:
+  scene_error(const std::string& file, long line, const std::string& reason)
+      : std::runtime_error(file + ":" + std::to_string(line) + ": " + reason), file_(file), line_(line), reason_(reason) {}
+  const std::string& file() const { return file_; }
+  long line() const { return line_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string file_;
+  long line_;
+  std::string reason_;
+};
+
+// How one number of a family is drawn.
+struct distribution {
+  enum class shape { log10, log2, uniform, constant };
+  shape kind = shape::constant;
+  double low = 0, high = 0;  // exponents for log10/log2, bounds for uniform, value for constant
+  int sign = 1;              // +1, -1, or 0 for either sign with equal odds
+  long line = 0;
+};
+
+// The algorithms of the report's tables: the library's three, its batch API
+// and two peers.
+enum class method { textbook, stable, newton, batch, boost_quadratic, eigen_companion };
+inline constexpr method all_methods[] = {method::textbook,        method::stable, method::newton,
+                                         method::batch,           method::boost_quadratic,
+                                         method::eigen_companion};
+std::string name_of(method m);
+std::optional<method> method_named(const std::string& name);
+
+// The number types of contact/types.hpp that the report runs.
+inline const std::vector<std::string> type_names = {"float",           "double",           "long_double",
+                                                    "float128",        "cpp_bin_float_50", "cpp_bin_float_100",
+                                                    "mpfr"};
+// Why the method cannot run in the type, or empty if it can.
+std::string unsupported(method m, const std::string& type);
+
+struct family {
+  std::string name;
+  std::string generator;                            // see inputs.hpp
+  std::map<std::string, distribution> parameters;  // named by the generator
+  long samples = 0;
+  long ulps = 0;  // boundary generators: the half-width of the neighbourhood in ulps
+  long line = 0;
+};
+
+enum class check { accuracy, timing, energy };
+
+// Which types and algorithms to run, and what to measure of them: accuracy and
+// timing on the scene's families, energy on the scene's [oscillator].
+struct run {
+  std::vector<std::string> types;
+  std::vector<method> methods;
+  std::vector<check> checks;
+  long samples = -1;         // at most this many samples of each family (-1: all)
+  long timing_inputs = 4096;  // length of the input array that the timings loop over
+  int repetitions = 5;
+  double min_time = 0.05;  // seconds per repetition
+  long line = 0;
+};
+
+struct throughput {
+  long lanes = 1 << 21;       // the streamed arrays (larger than the caches)
+  long cache_lanes = 4096;    // an in-cache size, for the compute-bound figure
+  int repetitions = 5;
+  double min_time = 0.1;
+  long line = 0;
+};
+
+struct oscillator {
+  double mass = 1e-3, spring = 1e3, barrier_height = -5e-4, barrier_stiffness = 1e13;
+  double sample_rate = 44100, duration = 1.0;
+  double initial_displacement = 0, initial_velocity = 1.0;
+  long plot_points = 400;
+  long line = 0;
+};
+
+struct scene {
+  std::string file;
+  std::string name, title, description;
+  std::uint64_t seed = 1;
+  int mpfr_digits10 = 50;
+  std::vector<family> families;
+  std::vector<run> runs;
+  std::optional<throughput> batch_throughput;
+  std::optional<oscillator> energy;
+};
+
+// Reads and checks a scene file; throws scene_error.
+scene parse_scene(const std::string& path);
+// Same, from text (`path` only names it in errors).
+scene parse_scene_text(const std::string& text, const std::string& path);
+
+}  // namespace report

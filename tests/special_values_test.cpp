@@ -1,0 +1,115 @@
+// Special values and hard cases, for every algorithm: the documented answers to
+// bad input, the exact cases, and a list of inputs that once were hard.
+#include "harness.hpp"
+
+namespace contact::testing {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+class EveryAlgorithm : public ::testing::TestWithParam<algorithm> {};
+INSTANTIATE_TEST_SUITE_P(, EveryAlgorithm, ::testing::ValuesIn(algorithms),
+                         [](const auto& info) { return std::string(name_of(info.param)); });
+
+TEST_P(EveryAlgorithm, NonFiniteOrNegativePhiIsInvalidAndNaN) {
+  const double bad[][3] = {{nan, 1, 1}, {1, nan, 1}, {1, 1, nan}, {inf, 1, 1}, {1, -inf, 1},
+                           {1, 1, inf}, {1, 1, -1}, {1, 1, -0x1p-1074}, {-inf, -inf, -inf}};
+  for (const auto& x : bad) {
+    const auto r = solve(x[0], x[1], x[2], GetParam());
+    EXPECT_EQ(r.which, contact_case::invalid) << x[0] << " " << x[1] << " " << x[2];
+    EXPECT_TRUE(std::isnan(r.s));
+  }
+}
+
+TEST_P(EveryAlgorithm, NegativeZeroPhiIsValid) {
+  EXPECT_EQ(solve(1e-3, 1e-4, -0.0, GetParam()).s, -1e-3);
+}
+
+// (The textbook form fails this for subnormal u: see TextbookFailure.)
+TEST_P(EveryAlgorithm, ZeroStiffnessGivesMinusUExactly) {
+  for (double u : {1e-3, -1e-3, 1e-100, -1e100})
+    for (double dy : {1e-4, -1e-4, 0.0, -0.0, 1e300}) EXPECT_EQ(solve(u, dy, 0.0, GetParam()).s, -u) << u << " " << dy;
+}
+
+TEST(StableAndNewton, ZeroStiffnessGivesMinusUExactlyForSubnormalU) {
+  for (double u : {0x1p-1074, -0x1p-1074, 0x1.8p-1060})
+    for (double dy : {1e-4, -1e-4, 0.0, -0.0}) {
+      EXPECT_EQ(solve_stable(u, dy, 0.0).s, -u) << u << " " << dy;
+      EXPECT_EQ(solve_newton(u, dy, 0.0).s, -u) << u << " " << dy;
+    }
+}
+
+// At rest on the barrier's edge (u = dy = 0) nothing moves, in every case.
+TEST_P(EveryAlgorithm, RestAtTheEdgeStaysAtRest) {
+  for (double phi : {0.0, 1e-3, 1.0, 1e6, 1e300}) EXPECT_EQ(solve(0.0, 0.0, phi, GetParam()).s, 0.0);
+}
+
+// Each case on a plain input, with its equation's closed form evaluated by hand.
+TEST_P(EveryAlgorithm, EachCaseOnAPlainInput) {
+  struct {
+    double u, dy, phi, s;
+    contact_case which;
+  } const cases[] = {
+      {-0.5, -1.0, 3.0, 0.5, contact_case::free},              // (A.29) s = -u
+      {2.0, 0.0, 3.0, -0.5, contact_case::impact},             // (A.30) dy = 0: s = -u / (1 + phi)
+      {3.0, 1.0, 3.0, 0.75, contact_case::contact},            // (A.31) (2 phi dy - u) / (1 + phi) = 3/4
+      {0.0, 1.0, 4.0, 2.0, contact_case::release},             // (A.32) sqrt(4 phi dy^2) / 2 = 2
+      {1.0, -1.0, 3.0, -1.0, contact_case::free},              // boundary u = -dy belongs to (A.29): s = dy
+      {2.0, 1.0, 3.0, 1.0, contact_case::contact},             // boundary u = dy (phi - 1): s = dy
+  };
+  for (const auto& c : cases) {
+    const auto r = solve(c.u, c.dy, c.phi, GetParam());
+    EXPECT_EQ(r.which, c.which) << c.u << " " << c.dy << " " << c.phi;
+    EXPECT_EQ(r.s, c.s) << c.u << " " << c.dy << " " << c.phi;
+  }
+}
+
+// Inputs that broke an earlier version or sit on a knife edge (hex, exact).
+// Each line: the stable answer's error against the reference, within bound.
+TEST(StableHardCases, ListedInputsStayWithinBound) {
+  const double hard[][3] = {
+      {0x1.f72131f09bb4p-203, 0x1.8f573f2bfc85cp-738, 0x1.d262f1e08e256p+1005},  // release, s >> dy
+      {0x1.0fafed26833acp+999, -0x1.f3712352ac9fbp+598, 0x1.4e76d5ad11612p+450},  // impact, u near overflow
+      {0x1.7c4d7ec49ad9fp+110, 0x1.a9342c259ff79p+940, 0x1.9273bacd647d1p+178},   // release, s overflows
+      {0x1.3a92a30554801p-11, 0x1.a36e2eb1c432dp-14, 0x1.8p+1},                  // contact, s ~ 0
+      {0x1.0624dd2f1a9fcp-10, -0x1.a36e2eb1c432dp-14, 0x1.7e43c8800759cp+996},    // impact, root rounds onto dy
+      {1e300, -1e-300, 1e300},                                                    // impact, scaled path
+      {1e150, 1e-150, 1e308},                                                     // release, s = 1e-142
+      {0x1p-1074, 0x1p-1074, 0x1p+1023},                                          // subnormal u and dy
+      {-0x1p-1074, 0x1p-1074, 1.0},                                               // boundary on subnormals
+      {0x1.fffffffffffffp+1023, -0x1.fffffffffffffp+1023, 0x1.fffffffffffffp+1023},
+  };
+  for (const auto& x : hard) {
+    const auto exact = reference::solve(x[0], x[1], x[2]);
+    const auto r = solve_stable(x[0], x[1], x[2]);
+    EXPECT_EQ(r.which, exact.which);
+    EXPECT_TRUE(lies_on_its_side(r.which, r.s, x[1]));
+    if (root_is_finite_in<double>(exact))
+      EXPECT_LE(reference::ulp_error(r.s, exact), stable_bound(r.which, x[0] > 0)) << x[0] << " " << x[1] << " " << x[2];
+    else
+      EXPECT_TRUE(std::isinf(r.s));
+  }
+}
+
+// The reference itself: it certifies, and its rounding to double is the one
+// the stable answer approaches on an exactly representable root.
+TEST(Reference, ExactRootsAreReproducedExactly) {
+  const auto exact = reference::solve(3.0, 1.0, 3.0);  // (A.31): s = 3/4
+  EXPECT_TRUE(exact.is_certified);
+  EXPECT_EQ(reference::rounded_to_double(exact.s), 0.75);
+  EXPECT_EQ(reference::ulp_error(0.75, exact), 0.0);
+  EXPECT_EQ(reference::ulp_error(std::nextafter(0.75, 2.0), exact), 1.0);
+}
+
+// A bracket that does not contain the root is not certified: the check can fail.
+TEST(Reference, CertificationRejectsAWrongRoot) {
+  auto exact = reference::solve(3.0, 1.0, 3.0);
+  mpfr_set_d(exact.s.get(), 1.5, MPFR_RNDN);
+  const reference::rational u(reference::exactly(3.0, 256)), dy(reference::exactly(1.0, 256)), phi(reference::exactly(3.0, 256));
+  const reference::rational wrong(exact.s);
+  EXPECT_GT(reference::detail_ref::residual_sign(wrong, u, dy, phi), 0);  // R(1.5) > 0: 1.5 is above the root 3/4
+}
+
+}  // namespace
+}  // namespace contact::testing
