@@ -136,6 +136,7 @@ TEST(MeasuredAccuracy, MaximumUlpErrorPerAlgorithmAndFamilyInDouble) {
   measure("whole range", rc::gen::construct<input<double>>(any_finite<double>(), any_finite<double>(), any_phi<double>()));
   measure("case boundaries", boundary_input<double>());
   measure("audio rate", physical_input<double>());
+  measure("cancellation", cancellation_input<double>());
   for (const auto& [family, f] : stats) {
     std::printf("%-16s %6ld cases  max ulp: textbook %-10.4g stable %-6.3g newton %.4g\n", family.c_str(), f.cases,
                 f.worst[0], f.worst[1], f.worst[2]);
@@ -145,6 +146,7 @@ TEST(MeasuredAccuracy, MaximumUlpErrorPerAlgorithmAndFamilyInDouble) {
   }
   EXPECT_GT(stats["whole range"].worst[0], 1e6);
   EXPECT_GT(stats["whole range"].worst[2], 1e6);
+  EXPECT_GT(stats["cancellation"].worst[0], 1e6);
 }
 
 }  // namespace

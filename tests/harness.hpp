@@ -70,8 +70,9 @@ inline double stable_bound_any() {
   return largest;
 }
 
-// Boost's cpp_bin_float has no fused fma (its fma rounds twice), so one
-// rounding more enters each fma of the stable path: one ulp more is claimed.
+// Boost's cpp_bin_float has no fused fma (its fma rounds twice); the stable
+// path replaces it by an exact product and sum whose final rounding is within
+// an ulp rather than half: one ulp more is claimed.
 template <class T>
 constexpr double unfused_fma_allowance = 0;
 template <>
@@ -209,11 +210,35 @@ rc::Gen<input<T>> boundary_input() {
                       });
 }
 
+// The cancellation regions: (A.31) near s = 0 (u within a few ulps of 2 phi dy)
+// and (A.32) with u >> sqrt(phi) dy (the printed root subtracts nearly equal terms).
+template <class T>
+rc::Gen<input<T>> cancellation_input() {
+  auto near_zero_step = rc::gen::map(
+      rc::gen::tuple(log_uniform<T>(-60, 60), log_uniform<T>(-30, 30), rc::gen::inRange(-6, 7)), [](const auto& t) {
+        const auto& [dy, phi, steps] = t;
+        T u = 2 * phi * dy;
+        for (int k = 0; k < steps; ++k) u = detail::next_up(u);
+        for (int k = 0; k > steps; --k) u = detail::next_down(u);
+        return input<T>{u, dy, phi};
+      });
+  auto small_release = rc::gen::map(
+      rc::gen::tuple(log_uniform<T>(-40, 0), rc::gen::inRange(10, 40), log_uniform<T>(0, 1)), [](const auto& t) {
+        const auto& [u, gap, factor] = t;
+        using std::ldexp;
+        const T dy = ldexp(u, -gap);            // dy << u
+        const T phi = (u / dy) * 4 * factor;    // phi > u / dy + 1, so (A.32) applies, with phi dy^2 << u^2
+        return input<T>{u, dy, phi};
+      });
+  return rc::gen::oneOf(near_zero_step, small_release);
+}
+
 // Every family together, for properties that must hold everywhere.
 template <class T>
 rc::Gen<input<T>> any_input() {
   return rc::gen::weightedOneOf<input<T>>({{6, rc::gen::construct<input<T>>(any_finite<T>(), any_finite<T>(), any_phi<T>())},
                                            {3, boundary_input<T>()},
+                                           {2, cancellation_input<T>()},
                                            {2, physical_input<T>()}});
 }
 

@@ -126,9 +126,10 @@ TYPED_TEST(StableProperty, ScalingUAndDyByPowerOfTwoScalesStepExactly) {
     const auto base = solve_stable(x.u, x.dy, x.phi), scaled = solve_stable(u2, dy2, x.phi);
     const T smallest_normal = (std::numeric_limits<T>::min)();
     auto normal_or_zero = [&](const T& v) { return v == 0 || (isfinite(v) && fabs(v) >= smallest_normal); };
+    auto normal = [&](const T& v) { return v != 0 && normal_or_zero(v); };
     RC_PRE(normal_or_zero(x.u) && normal_or_zero(x.dy) && normal_or_zero(u2) && normal_or_zero(dy2));
     RC_PRE(ldexp(u2, -k) == x.u && ldexp(dy2, -k) == x.dy);
-    RC_PRE(base.s != 0 && normal_or_zero(base.s) && normal_or_zero(ldexp(base.s, k)));
+    RC_PRE(normal(base.s) && normal(ldexp(base.s, k)));
     RC_LOG() << x << " k=" << k << " s=" << base.s << " s(2^k)=" << scaled.s << "\n";
     RC_ASSERT(scaled.which == base.which);
     RC_ASSERT(scaled.s == ldexp(base.s, k));

@@ -10,14 +10,13 @@
 // window (extreme magnitudes, NaN, infinity, phi < 0) are found by an OR over a
 // block of lanes and solved by the scalar contact::solve_stable afterwards.
 //
-// The exact criterion of (A.21), u + dy - phi dy >= 0, is decided as in
-// stable.hpp: phi dy as the exact pair of two_prod, then the sign of an exact
-// sum of four terms. The scalar path builds a Shewchuk expansion with zero
-// elimination, which branches; here the expansion is grown without zero
-// elimination (Shewchuk 1997, Theorem 10: the components are then
-// non-overlapping and in increasing order of magnitude, except that any may be
-// zero), so the sign of the exact sum is the sign of the last non-zero
-// component, found with selects. Both are exact, so they agree.
+// The exact criterion of (A.21), u + dy - phi dy >= 0, is what stable.hpp
+// decides with an exact expansion (two_prod, then Shewchuk's sum with zero
+// elimination, which branches). Here a floating-point filter with a proven
+// error bound decides every lane whose sum is not within a few ulps of 0; the
+// lanes it cannot decide (u within a few ulps of dy (phi - 1)) join the
+// out-of-window lanes in the scalar fix-up. Both decisions are exact, so they
+// agree.
 //
 // Vectorisation needs an fma instruction (x86-64-v3: -march=x86-64-v3 or
 // -mfma) and -fno-math-errno (so that sqrt is an instruction without an errno
@@ -37,6 +36,12 @@
 
 #include "stable.hpp"
 
+#if defined(__GNUC__)
+#define CONTACT_BATCH_INLINE inline __attribute__((always_inline))
+#else
+#define CONTACT_BATCH_INLINE inline
+#endif
+
 namespace contact {
 namespace batch_detail {
 
@@ -49,128 +54,122 @@ using bits_t = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std:
 // Lanes solved per block; the scalar fix-up of out-of-window lanes happens per block.
 inline constexpr std::ptrdiff_t block = 256;
 
+// Lane masks: all ones for true, all zeros for false, as unsigned integers of
+// T's width. Conditions are combined with &, | and ~ on masks (not && and || on
+// bool), so the loop has no control flow and the compiler keeps masks in
+// vector registers.
 template <class T>
-struct window_bounds {
-  T lowest, highest;
-};
-
-template <class T>
-window_bounds<T> bounds() {
-  const long half = detail::safe_window<T>::half_width();
-  return {std::ldexp(T(1), static_cast<int>(-half)), std::ldexp(T(1), static_cast<int>(half))};
+CONTACT_BATCH_INLINE bits_t<T> mask(bool c) {
+  return bits_t<T>(0) - bits_t<T>(c);
 }
 
-// c ? a : b, as a blend of bit patterns: both operands are always computed, so
+// m ? a : b, as a blend of bit patterns: both operands are always computed, so
 // the compiler neither moves their arithmetic into a branch nor needs to
 // prove that it cannot trap (which -ftrapping-math, the default, forbids).
 template <class T>
-inline T pick(bool c, T a, T b) {
+CONTACT_BATCH_INLINE T pick(bits_t<T> m, T a, T b) {
   using U = bits_t<T>;
-  const U mask = U(0) - U(c);
-  return std::bit_cast<T>(U((std::bit_cast<U>(a) & mask) | (std::bit_cast<U>(b) & ~mask)));
+  return std::bit_cast<T>(U((std::bit_cast<U>(a) & m) | (std::bit_cast<U>(b) & ~m)));
 }
 
-// The part of every lane's work that needs no branch. Returns 1 if the lane
-// lies outside the plain-T window (or is invalid) and so must be redone by the
-// scalar path; s and which are then meaningless.
-// The lane can take the branch-free path: u, dy and phi lie inside
-// detail::safe_window<T> (or are 0), which excludes NaN and infinity, and phi >= 0.
+// The lane can take the branch-free path: u, dy and phi are normal numbers
+// with exponents in [-E, E), E = vector_window<T>, and phi > 0. That is inside
+// detail::safe_window<T> (whose half-width is at least E), so the scalar path
+// runs the same plain-T operations on these lanes; NaN, infinity, zero, phi < 0
+// and the extreme magnitudes all go to the scalar fix-up. The test looks at the
+// exponent fields only: d = biased exponent - (bias - E) lies in [0, 2E) for
+// every one of the three, which (2E being a power of two) is a single test of
+// their bitwise OR. phi's sign bit stays in its exponent field, so phi < 0 fails.
 template <class T>
-inline bool inside_window(T u, T dy, T phi, T lowest, T highest) {
-  const T au = std::fabs(u), ady = std::fabs(dy), aphi = std::fabs(phi);
-  // bitwise & and |, not && and ||: no short-circuit, so no control flow
-  return ((au == 0) | ((au >= lowest) & (au <= highest))) & ((ady == 0) | ((ady >= lowest) & (ady <= highest))) &
-         ((aphi == 0) | ((aphi >= lowest) & (aphi <= highest))) & (phi >= 0);
-}
+inline constexpr int vector_window = std::is_same_v<T, double> ? 128 : 16;
 
 template <class T>
-inline unsigned lane(T u, T dy, T phi, T lowest, T highest, T& s_out, int& which_out) {
+CONTACT_BATCH_INLINE bits_t<T> inside_window(T u, T dy, T phi) {
+  using U = bits_t<T>;
+  constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
+  constexpr U base = U(std::numeric_limits<T>::max_exponent - 1 - vector_window<T>);
+  const U du = U((std::bit_cast<U>(u) << 1) >> (significand_bits + 1)) - base;
+  const U ddy = U((std::bit_cast<U>(dy) << 1) >> (significand_bits + 1)) - base;
+  const U dphi = U(std::bit_cast<U>(phi) >> significand_bits) - base;
+  return mask<T>(((du | ddy | dphi) >> (std::countr_zero(unsigned(2 * vector_window<T>)))) == 0);
+}
+static_assert(vector_window<double> <= 240 && vector_window<float> <= 24, "inside safe_window's half-width");
+
+// One lane of the branch-free path. Returns all ones if s and which are
+// solve_stable's, and zero if the lane must be redone by the scalar path: it
+// lies outside the vector window, or (A.21)'s exact sum is so close to 0 that
+// the filter below cannot tell its sign.
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, int& which_out) {
   using U = bits_t<T>;
   constexpr U sign_bit = U(1) << (sizeof(T) * 8 - 1);
-  const bool inside = inside_window(u, dy, phi, lowest, highest);
-
-  // (A.30) impact, stable_form::impact(u, gap = -dy, phi)
+  const U inside = inside_window(u, dy, phi);
+  const U no_contact_before = mask<T>(dy <= 0);
   const T gap = -dy;
-  const T push = phi * gap;
-  const T impact_discriminant = std::fma(u, u, T(4) * (push * (u - gap)));
-  // (A.32) release, stable_form::release(u, dy, phi)
-  const T stiffness_term = (phi * dy) * dy;
-  const T release_discriminant = std::fma(u, u, T(4) * stiffness_term);
 
-  const bool no_contact_before = dy <= 0;
-  const T root = std::sqrt(pick(no_contact_before, impact_discriminant, release_discriminant));
+  // Both square roots in one: (A.30) impact has stable_form::impact's
+  // discriminant u^2 + 4 (phi gap) (u - gap), (A.32) release has
+  // stable_form::release's u^2 + 4 ((phi dy) dy); the same operations on the
+  // lane's own operands.
+  const T x = phi * pick(no_contact_before, gap, dy);  // impact: push = phi gap; release: phi dy
+  const T z = x * pick(no_contact_before, T(u - gap), dy);  // impact: push (u - gap); release: phi dy^2
+  const T root = std::sqrt(std::fma(u, u, T(4) * z));
 
-  // (A.21) stays in contact: the sign of the exact sum u + dy - ph - pl,
-  // where ph + pl = phi dy exactly; Knuth's TwoSum, grown without zero elimination.
-  const T ph = phi * dy;
-  const T pl = std::fma(phi, dy, -ph);
-  auto two_sum = [](T a, T b, T& error) {
-    const T sum = a + b;
-    const T b_virtual = sum - a;
-    const T a_virtual = sum - b_virtual;
-    error = (a - a_virtual) + (b - b_virtual);
-    return sum;
-  };
-  T e0, e1, e2;
-  T top = two_sum(dy, u, e0);  // expansion {e0, top}
-  T c = -ph;
-  c = two_sum(c, e0, e0);
-  top = two_sum(c, top, e1);  // expansion {e0, e1, top}
-  c = -pl;
-  c = two_sum(c, e0, e0);
-  c = two_sum(c, e1, e1);
-  top = two_sum(c, top, e2);  // expansion {e0, e1, e2, top}
-  T leading = e0;
-  leading = pick(e1 != 0, e1, leading);
-  leading = pick(e2 != 0, e2, leading);
-  leading = pick(top != 0, top, leading);
-  const bool stays_in_contact = !(leading < 0);
+  // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
+  // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
+  // 2^-p (|a| + |b| + |phi dy|) (p = precision; no underflow inside the window),
+  // so |b| > 2^(3-p) (|a| + |phi dy|) gives its sign. The rare lanes it cannot
+  // decide go to the scalar path, whose exact expansion decides them.
+  const T a = u + dy;
+  const T b = a - x;  // on dy > 0 lanes, x = phi dy
+  constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
+  const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + std::fabs(x)) * filter);
 
-  const bool is_free = no_contact_before & (u <= -dy);
-  const bool is_impact = no_contact_before & !is_free;
-  const bool is_contact = !no_contact_before & stays_in_contact;
-  const bool release_rationalised = u > 0;
+  // The case masks, each from its own comparison (no ~ on masks: fewer instructions).
+  const U contact_before = mask<T>(dy > 0);
+  const U is_free = no_contact_before & mask<T>(u <= gap);
+  const U is_impact = no_contact_before & mask<T>(!(u <= gap));
+  const U is_contact = contact_before & mask<T>(b > 0);
+  const U is_release = contact_before & mask<T>(!(b > 0));
 
   // One division per lane: numerator and denominator of the lane's case.
-  const T impact_numerator = -((u + T(2) * push) + root);
-  const T impact_denominator = T(2) * (T(1) + phi);
-  const T contact_numerator = std::fma(phi, T(2) * dy, -u);
-  const T contact_denominator = T(1) + phi;
-  const T release_numerator = pick(release_rationalised, T(2) * stiffness_term, root - u);
-  const T release_denominator = pick(release_rationalised, u + root, T(2));
-  T numerator = pick(is_contact, contact_numerator, release_numerator);
-  T denominator = pick(is_contact, contact_denominator, release_denominator);
-  numerator = pick(is_impact, impact_numerator, numerator);
-  denominator = pick(is_impact, impact_denominator, denominator);
-  numerator = pick(is_free, -u, numerator);
+  const U rationalised = mask<T>(u > 0);
+  const T one_plus_phi = T(1) + phi;
+  T numerator = pick(rationalised, T(T(2) * z), T(root - u));  // release
+  T denominator = pick(rationalised, T(u + root), T(2));
+  numerator = pick(is_contact, std::fma(phi, T(2) * dy, -u), numerator);
+  denominator = pick(is_contact, one_plus_phi, denominator);
+  numerator = pick(is_impact, T(-((u + T(2) * x) + root)), numerator);
+  denominator = pick(is_impact, T(T(2) * one_plus_phi), denominator);
+  numerator = pick(is_free, T(-u), numerator);
   denominator = pick(is_free, T(1), denominator);
   T s = numerator / denominator;
 
   // The clamps of solve_stable; next_down(dy) for dy <= 0 and next_up(dy) for dy > 0.
   const U dy_bits = std::bit_cast<U>(dy);
-  const T below_dy = std::bit_cast<T>(U((dy_bits | sign_bit) + 1));
-  const T above_dy = std::bit_cast<T>(U(dy_bits + 1));
-  s = pick(is_impact & !(s < dy), below_dy, s);
-  s = pick(is_contact & (s > dy), dy, s);
-  s = pick(!no_contact_before & !is_contact & !(s > dy), above_dy, s);
+  const T unclamped = s;
+  s = pick(is_impact & mask<T>(!(unclamped < dy)), std::bit_cast<T>(U((dy_bits | sign_bit) + 1)), s);
+  s = pick(is_contact & mask<T>(unclamped > dy), dy, s);
+  s = pick(is_release & mask<T>(!(unclamped > dy)), std::bit_cast<T>(U(dy_bits + 1)), s);
 
   s_out = s;
-  which_out = is_free ? 1 : (is_impact ? 2 : (is_contact ? 3 : 4));
-  return inside ? 0u : 1u;
+  // the case number 1 + [impact] + 2 [dy > 0] + [release]
+  which_out = static_cast<int>(1 + (is_impact & 1) + (contact_before & 2) + (is_release & 1));
+  return inside & (no_contact_before | decided);
 }
 
 template <class T>
 void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restrict phi, T* __restrict s,
                  int* __restrict which, std::ptrdiff_t n) {
-  const window_bounds<T> window = bounds<T>();
-  const T lowest = window.lowest, highest = window.highest;
   for (std::ptrdiff_t start = 0; start < n; start += block) {
     const std::ptrdiff_t end = start + block < n ? start + block : n;
-    unsigned outside = 0;
-    for (std::ptrdiff_t i = start; i < end; ++i) outside |= lane(u[i], dy[i], phi[i], lowest, highest, s[i], which[i]);
-    if (outside) {
+    bits_t<T> all_solved = ~bits_t<T>(0);
+    for (std::ptrdiff_t i = start; i < end; ++i) all_solved &= lane(u[i], dy[i], phi[i], s[i], which[i]);
+    if (all_solved != ~bits_t<T>(0)) {
       for (std::ptrdiff_t i = start; i < end; ++i) {
-        if (!inside_window(u[i], dy[i], phi[i], lowest, highest)) {
+        T unused_s;
+        int unused_which;
+        if (!lane(u[i], dy[i], phi[i], unused_s, unused_which)) {
           const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
           s[i] = r.s;
           which[i] = static_cast<int>(r.which);

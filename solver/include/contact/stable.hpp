@@ -33,10 +33,10 @@ namespace stable_form {
 // non-negative terms; u - gap is exact when they are close (Sterbenz).
 template <class Num>
 Num impact(const Num& u, const Num& gap, const Num& phi) {
-  using std::fma;
+  using detail::fused_multiply_add;
   using std::sqrt;
   const Num push = phi * gap;  // phi |dy|
-  const Num discriminant = fma(u, u, Num(4) * (push * (u - gap)));
+  const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
   return -((u + Num(2) * push) + sqrt(discriminant)) / (Num(2) * (Num(1) + phi));
 }
 
@@ -45,8 +45,8 @@ Num impact(const Num& u, const Num& gap, const Num& phi) {
 // leaves it a single rounding. 2 dy, not 2 phi, so that nothing overflows.
 template <class Num>
 Num contact(const Num& u, const Num& dy, const Num& phi) {
-  using std::fma;
-  return fma(phi, Num(2) * dy, -u) / (Num(1) + phi);
+  using detail::fused_multiply_add;
+  return fused_multiply_add(phi, Num(2) * dy, -u) / (Num(1) + phi);
 }
 
 // (A.32), from (A.23) corrected: s^2 + u s - phi dy^2 = 0, positive root
@@ -54,10 +54,10 @@ Num contact(const Num& u, const Num& dy, const Num& phi) {
 // is rationalised: s = 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2)).
 template <class Num>
 Num release(const Num& u, const Num& dy, const Num& phi) {
-  using std::fma;
+  using detail::fused_multiply_add;
   using std::sqrt;
   const Num stiffness_term = (phi * dy) * dy;  // phi dy^2
-  const Num root = sqrt(fma(u, u, Num(4) * stiffness_term));
+  const Num root = sqrt(fused_multiply_add(u, u, Num(4) * stiffness_term));
   if (u > Num(0)) return Num(2) * stiffness_term / (u + root);
   return (root - u) / Num(2);
 }

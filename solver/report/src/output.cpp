@@ -443,7 +443,12 @@ json scene_json(const scene_result& r) {
                                  {"ns_repetitions", reps}});
     }
   j["energy"] = json::array();
-  for (const auto& e : r.energy)
+  for (const auto& e : r.energy) {
+    json time = json::array(), envelope = json::array();
+    for (std::size_t k = 0; k < e.time.size(); ++k) {
+      time.push_back(e.time[k]);
+      envelope.push_back(number(e.envelope[k]));
+    }
     j["energy"].push_back({{"type", e.type},
                            {"algorithm", e.algorithm},
                            {"steps", e.steps},
@@ -451,7 +456,10 @@ json scene_json(const scene_result& r) {
                            {"max_relative_error", number(e.max_exact)},
                            {"final_relative_error", number(e.final_exact)},
                            {"max_relative_error_in_type", number(e.max_in_type)},
-                           {"finite", e.finite}});
+                           {"finite", e.finite},
+                           {"plot_time", time},
+                           {"plot_max_relative_error", envelope}});
+  }
   return j;
 }
 

@@ -1,1 +1,461 @@
+// The report tool end to end: it runs a small scene with --raw, and every
+// figure of report.md's tables and of results.csv must be what the raw
+// measurements give; the raw measurements themselves are checked against an
+// independent solve and the certified reference. A bad scene file stops the
+// tool with "FILE:LINE: reason"; a scene that asks for double alone gets no
+// other type.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "contact/batch.hpp"
+#include "contact/reference.hpp"
+#include "contact/solve.hpp"
+#include "output.hpp"
+#include "peers.hpp"
+#include "results.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+const fs::path work = CONTACT_REPORT_TEST_DIR;
+
+const char* small_scene = R"([scene]
+name = "small"
+title = "Small scene for the tests"
+seed = 11
+
+[[family]]
+name = "tanpura"
+generator = "physical"
+samples = 300
+mass = [1e-4, 1e-2]
+spring = [1.0, 1e4]
+barrier_stiffness = [1e5, 1e13]
+displacement = { log10 = [-7, -3], sign = "both" }
+compression = { log10 = [-7, -3], sign = "both" }
+velocity = { log10 = [-2.5, 1.5], sign = "both" }
+
+[[family]]
+name = "wild"
+generator = "box"
+samples = 200
+u = { log2 = [-1074, 1023], sign = "both" }
+dy = { log2 = [-1074, 1023], sign = "both" }
+phi = { log2 = [-1074, 1023] }
+
+[[family]]
+name = "release_cancel"
+generator = "release_cancellation"
+samples = 200
+dy = { log10 = [-7, -3] }
+phi = { log10 = [8, 16] }
+ratio = { log10 = [0, 6] }
+
+[[run]]
+types = ["double"]
+algorithms = ["textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion"]
+checks = ["accuracy", "timing"]
+timing_inputs = 256
+repetitions = 3
+min_time = 0.005
+
+[[run]]
+types = ["long_double", "cpp_bin_float_50"]
+algorithms = ["stable"]
+checks = ["accuracy", "timing"]
+samples = 40
+timing_inputs = 32
+repetitions = 2
+min_time = 0.005
+
+[[run]]
+types = ["double"]
+algorithms = ["textbook", "stable"]
+checks = ["energy"]
+
+[oscillator]
+duration = 0.02
+plot_points = 50
+
+[throughput]
+lanes = 8192
+cache_lanes = 1024
+repetitions = 3
+min_time = 0.005
+)";
+
+struct command_result {
+  int status;
+  std::string err;
+};
+
+command_result run_tool(const std::string& arguments, const std::string& tag) {
+  const fs::path err = work / (tag + ".stderr");
+  const std::string command = std::string(CONTACT_REPORT_EXE) + " " + arguments + " > /dev/null 2> '" + err.string() + "'";
+  const int raw = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+double value_of(const json& j) {  // numbers, or "inf"/"nan" strings
+  if (j.is_number()) return j.get<double>();
+  if (!j.is_string()) {
+    ADD_FAILURE() << "not a figure: " << j.dump();
+    return NAN;
+  }
+  const std::string s = j.get<std::string>();
+  if (s == "inf") return INFINITY;
+  if (s == "-inf") return -INFINITY;
+  return NAN;
+}
+
+std::vector<std::string> split(const std::string& line, char by) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::stringstream in(line);
+  while (std::getline(in, cell, by)) out.push_back(cell);
+  return out;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && s.front() == ' ') s.erase(s.begin());
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+// The rows of the markdown table whose header row starts with `header`.
+std::vector<std::vector<std::string>> table(const std::string& markdown, const std::string& header) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream in(markdown);
+  std::string line;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (!inside) {
+      if (line.rfind(header, 0) == 0) {
+        inside = true;
+        std::getline(in, line);  // |---|
+      }
+      continue;
+    }
+    if (line.empty() || line[0] != '|') break;
+    auto cells = split(line.substr(1), '|');
+    for (auto& c : cells) c = trim(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+struct raw_sample {
+  std::string family;
+  double u, dy, phi;
+  std::string s;
+  int which;
+  double ulps;
+};
+
+std::vector<raw_sample> read_raw(const fs::path& p) {
+  std::vector<raw_sample> rows;
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "index,family,u,dy,phi,s,case,ulp_error");
+  while (std::getline(in, line)) {
+    const auto c = split(line, ',');
+    EXPECT_EQ(c.size(), 8u) << line;
+    if (c.size() != 8) continue;
+    rows.push_back({c[1], std::strtod(c[2].c_str(), nullptr), std::strtod(c[3].c_str(), nullptr),
+                    std::strtod(c[4].c_str(), nullptr), c[5], std::stoi(c[6]), std::strtod(c[7].c_str(), nullptr)});
+  }
+  return rows;
+}
+
+bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+
+class tool : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    fs::remove_all(work);
+    fs::create_directories(work);
+    std::ofstream(work / "small.toml") << small_scene;
+    const auto r = run_tool("--scene '" + (work / "small.toml").string() + "' --out '" + (work / "out").string() + "' --raw",
+                            "small");
+    status_ = r.status;
+    stderr_ = r.err;
+    if (status_ == 0) {
+      results_ = json::parse(read(work / "out" / "results.json"));
+      markdown_ = read(work / "out" / "report.md");
+    }
+  }
+  static int status_;
+  static std::string stderr_, markdown_;
+  static json results_;
+
+  const json& scene() const { return results_["scenes"][0]; }
+};
+int tool::status_ = -1;
+std::string tool::stderr_, tool::markdown_;
+json tool::results_;
+
+TEST_F(tool, runs_and_writes_every_output) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  for (const char* name : {"report.md", "results.csv", "results.json", "plots/plots.gp", "plots/pareto_small.svg",
+                           "plots/pareto_small.png", "plots/hist_double_textbook.svg", "plots/energy_small_double.png"})
+    EXPECT_TRUE(fs::exists(work / "out" / name)) << name;
+  EXPECT_NE(stderr_.find("contact-report: scene small"), std::string::npos);  // progress on stderr
+  // a PNG is a PNG
+  const std::string png = read(work / "out" / "plots" / "pareto_small.png");
+  ASSERT_GE(png.size(), 8u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
+TEST_F(tool, only_what_the_scene_names_is_measured) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  std::set<std::string> seen;
+  for (const auto& a : scene()["accuracy"]) seen.insert(a["type"].get<std::string>() + "/" + a["algorithm"].get<std::string>());
+  const std::set<std::string> expected = {"double/textbook", "double/stable", "double/newton", "double/batch",
+                                          "double/boost_quadratic", "double/eigen_companion", "long_double/stable",
+                                          "cpp_bin_float_50/stable"};
+  EXPECT_EQ(seen, expected);
+  EXPECT_EQ(scene()["timing"].size(), expected.size());
+  EXPECT_EQ(scene()["energy"].size(), 2u);
+}
+
+// Every accuracy figure is what the raw samples give, and the raw samples are
+// what an independent solve and the certified reference give.
+TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto rows = table(markdown_, "| type | algorithm | samples |");
+  ASSERT_EQ(rows.size(), 8u);
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string type = a["type"], algorithm = a["algorithm"];
+    SCOPED_TRACE(type + " " + algorithm);
+    const auto raw = read_raw(work / "out" / "raw" / "small" / ("accuracy_" + type + "_" + algorithm + ".csv"));
+    ASSERT_EQ(static_cast<long>(raw.size()), a["samples"].get<long>());
+    std::vector<double> errors;
+    long nan = 0, inf = 0, violations = 0;
+    std::map<std::string, double> family_max;
+    for (const auto& r : raw) {
+      errors.push_back(r.ulps);
+      const double s = std::strtod(r.s.c_str(), nullptr);
+      // wider types print decimals that may lie beyond double's range: read inf and nan as text
+      nan += r.s.find("nan") != std::string::npos;
+      inf += r.s.find("inf") != std::string::npos;
+      if (type == "double" && !contact::lies_on_its_side(static_cast<contact::contact_case>(r.which), s, r.dy)) ++violations;
+      double& worst = family_max[r.family];
+      worst = std::max(worst, std::isnan(r.ulps) ? INFINITY : r.ulps);
+    }
+    const report::summary summary = report::summarize(errors);
+    EXPECT_TRUE(same(summary.max, value_of(a["max_ulp"])));
+    EXPECT_TRUE(same(summary.p99, value_of(a["p99_ulp"])));
+    EXPECT_TRUE(same(summary.median, value_of(a["median_ulp"])));
+    EXPECT_EQ(nan, a["nan"].get<long>());
+    EXPECT_EQ(inf, a["inf"].get<long>());
+    if (type == "double") EXPECT_EQ(violations, a["complementarity_violations"].get<long>());
+    for (const auto& [family, worst] : family_max) EXPECT_TRUE(same(worst, value_of(a["family_max_ulp"][family])));
+
+    // The raw s is what the named algorithm gives, and its error is what the reference says.
+    if (type == "double") {
+      const auto method = report::method_named(algorithm);
+      ASSERT_TRUE(method.has_value());
+      for (std::size_t i = 0; i < raw.size(); i += 7) {
+        const auto& r = raw[i];
+        contact::solution<double> mine{};
+        switch (*method) {
+          case report::method::textbook: mine = contact::solve_textbook(r.u, r.dy, r.phi); break;
+          case report::method::newton: mine = contact::solve_newton(r.u, r.dy, r.phi); break;
+          case report::method::boost_quadratic: mine = report::peers::solve_boost(r.u, r.dy, r.phi); break;
+          case report::method::eigen_companion: mine = report::peers::solve_eigen(r.u, r.dy, r.phi); break;
+          default: mine = contact::solve_stable(r.u, r.dy, r.phi); break;  // batch equals stable bit for bit
+        }
+        const double s = std::strtod(r.s.c_str(), nullptr);
+        EXPECT_TRUE(same(mine.s, s)) << std::hexfloat << r.u << " " << r.dy << " " << r.phi;
+        EXPECT_EQ(static_cast<int>(mine.which), r.which);
+        const auto exact = contact::reference::solve<double>(r.u, r.dy, r.phi);
+        EXPECT_TRUE(same(contact::reference::ulp_error<double>(s, exact), r.ulps)) << std::hexfloat << r.u;
+      }
+    }
+
+    // The table row of report.md shows these figures.
+    bool found = false;
+    for (const auto& row : rows) {
+      if (row[0] != type || row[1] != algorithm) continue;
+      found = true;
+      EXPECT_EQ(row[2], std::to_string(a["samples"].get<long>()));
+      EXPECT_EQ(row[3], report::format_ulp(summary.max));
+      EXPECT_EQ(row[4], report::format_ulp(summary.p99));
+      EXPECT_EQ(row[5], report::format_ulp(summary.median));
+      const bool wide = row.size() == 14;  // with the "max ulp as double" column
+      const std::size_t k = wide ? 7 : 6;
+      EXPECT_EQ(row[k], std::to_string(nan));
+      EXPECT_EQ(row[k + 1].substr(0, row[k + 1].find(' ')), std::to_string(inf));
+      EXPECT_EQ(row[k + 2], std::to_string(a["complementarity_violations"].get<long>()));
+      EXPECT_EQ(row[k + 3], std::to_string(a["wrong_case"].get<long>()));
+    }
+    EXPECT_TRUE(found);
+  }
+}
+
+TEST_F(tool, timing_figures_come_from_the_repetitions) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto rows = table(markdown_, "| type | algorithm | samples |");
+  for (const auto& t : scene()["timing"]) {
+    const std::string type = t["type"], algorithm = t["algorithm"];
+    SCOPED_TRACE(type + " " + algorithm);
+    std::vector<double> reps;
+    for (const auto& x : t["ns_repetitions"]) reps.push_back(value_of(x));
+    // the raw file holds the same repetitions
+    std::ifstream raw(work / "out" / "raw" / "small" / ("timing_" + type + "_" + algorithm + ".csv"));
+    std::string line;
+    std::getline(raw, line);
+    std::vector<double> from_file;
+    while (std::getline(raw, line)) from_file.push_back(std::strtod(split(line, ',')[1].c_str(), nullptr));
+    EXPECT_EQ(from_file, reps);
+    ASSERT_GE(reps.size(), 2u);
+    for (double x : reps) EXPECT_GT(x, 0);
+    std::vector<double> sorted = reps;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t n = sorted.size();
+    const double median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+    EXPECT_DOUBLE_EQ(median, value_of(t["ns_median"]));
+    EXPECT_DOUBLE_EQ(sorted.front(), value_of(t["ns_min"]));
+    EXPECT_DOUBLE_EQ(sorted.back(), value_of(t["ns_max"]));
+    for (const auto& row : rows)
+      if (row[0] == type && row[1] == algorithm) {
+        const std::size_t k = row.size() - 3;
+        EXPECT_EQ(row[k], report::format_ns(median));
+        EXPECT_EQ(row[k + 1], report::format_ns(sorted.front()) + "–" + report::format_ns(sorted.back()));
+        EXPECT_EQ(row[k + 2], std::to_string(t["inputs"].get<long>()) + " × " + std::to_string(n));
+      }
+  }
+}
+
+TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  // headline: max ulp in double per algorithm
+  const auto head = table(markdown_, "| algorithm | small | worst |");
+  ASSERT_EQ(head.size(), 6u);
+  for (const auto& row : head)
+    for (const auto& a : scene()["accuracy"])
+      if (a["type"] == "double" && a["algorithm"] == row[0]) {
+        EXPECT_EQ(row[1], report::format_ulp(value_of(a["max_ulp"])));
+        EXPECT_EQ(row[2], "**" + report::format_ulp(value_of(a["max_ulp"])) + "**");
+      }
+  // results.csv holds the same numbers as results.json
+  std::ifstream csv(work / "out" / "results.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "scene,check,type,algorithm,metric,value");
+  std::map<std::string, double> figures;
+  while (std::getline(csv, line)) {
+    const auto c = split(line, ',');
+    ASSERT_EQ(c.size(), 6u) << line;
+    figures[c[1] + "/" + c[2] + "/" + c[3] + "/" + c[4]] = std::strtod(c[5].c_str(), nullptr);
+  }
+  for (const auto& a : scene()["accuracy"])
+    EXPECT_TRUE(same(figures.at("accuracy/" + a["type"].get<std::string>() + "/" + a["algorithm"].get<std::string>() + "/max_ulp"),
+                     value_of(a["max_ulp"])));
+  for (const auto& t : scene()["timing"])
+    EXPECT_EQ(figures.at("timing/" + t["type"].get<std::string>() + "/" + t["algorithm"].get<std::string>() + "/ns_median"),
+              value_of(t["ns_median"]));
+  // throughput: medians of the repetitions, and the headline ratios from them
+  std::map<std::string, double> streamed;
+  for (const auto& t : scene()["throughput"]) {
+    std::vector<double> reps;
+    for (const auto& x : t["ns_repetitions"]) reps.push_back(value_of(x));
+    std::sort(reps.begin(), reps.end());
+    ASSERT_EQ(reps.size(), 3u);
+    EXPECT_DOUBLE_EQ(reps[1], value_of(t["ns_median"]));
+    if (t["lanes"] == 8192) streamed[t["path"]] = reps[1];
+  }
+  ASSERT_EQ(streamed.size(), 4u);
+  const auto& batch = results_["headline"]["batch"]["streamed"];
+  EXPECT_DOUBLE_EQ(value_of(batch["speedup_over_textbook"]), streamed["textbook"] / streamed["batch"]);
+  EXPECT_DOUBLE_EQ(value_of(batch["batch_to_floor"]), streamed["batch"] / streamed["floor"]);
+  // energy: the maximum is the maximum of the plotted series; the table shows it
+  const auto energy_rows = table(markdown_, "| type | algorithm | steps in contact |");
+  ASSERT_EQ(energy_rows.size(), 2u);
+  for (const auto& e : scene()["energy"]) {
+    double worst = 0;
+    for (const auto& x : e["plot_max_relative_error"]) worst = std::max(worst, value_of(x));
+    EXPECT_EQ(worst, value_of(e["max_relative_error"]));
+    EXPECT_EQ(e["steps"].get<long>(), 882);
+    for (const auto& row : energy_rows)
+      if (row[0] == e["type"] && row[1] == e["algorithm"]) EXPECT_EQ(row[3], report::format_energy(worst));
+  }
+}
+
+TEST_F(tool, a_bad_scene_file_stops_the_tool_with_file_line_and_reason) {
+  const fs::path bad = work / "bad.toml";
+  std::string text = small_scene;
+  text.replace(text.find("seed = 11"), 9, "seed = 11\nsamples = 3");
+  std::ofstream(bad) << text;
+  const auto r = run_tool("--scene '" + bad.string() + "' --out '" + (work / "bad-out").string() + "'", "bad");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(bad.string() + ":5: unknown key 'samples' in [scene]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work / "bad-out" / "report.md"));
+
+  std::ofstream(work / "syntax.toml") << "[scene]\nname = \"x\"\nseed = \n";
+  const auto s = run_tool("--scene '" + (work / "syntax.toml").string() + "' --out '" + (work / "bad-out").string() + "'",
+                          "syntax");
+  EXPECT_EQ(s.status, 1);
+  EXPECT_NE(s.err.find((work / "syntax.toml").string() + ":3: "), std::string::npos) << s.err;
+
+  const auto missing = run_tool("--scene '" + (work / "missing.toml").string() + "' --out '" + (work / "bad-out").string() + "'",
+                                "missing");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("missing.toml:0: cannot read the scene file"), std::string::npos) << missing.err;
+}
+
+TEST_F(tool, a_double_only_scene_builds_no_other_type) {
+  std::ofstream(work / "double.toml") << R"([scene]
+name = "double_only"
+[[family]]
+name = "box"
+generator = "box"
+samples = 50
+u = [1e-6, 1e-3]
+dy = { log10 = [-6, -3], sign = "both" }
+phi = [1e-2, 1e4]
+[[run]]
+types = ["double"]
+algorithms = ["stable"]
+checks = ["accuracy"]
+)";
+  const auto r = run_tool("--scene '" + (work / "double.toml").string() + "' --out '" + (work / "double-out").string() + "'",
+                          "double");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read(work / "double-out" / "results.json"));
+  ASSERT_EQ(j["scenes"][0]["accuracy"].size(), 1u);
+  EXPECT_EQ(j["scenes"][0]["accuracy"][0]["type"], "double");
+  EXPECT_TRUE(j["scenes"][0]["timing"].empty());
+  EXPECT_TRUE(j["scenes"][0]["energy"].empty());
+  EXPECT_TRUE(j["scenes"][0]["throughput"].empty());
+  EXPECT_EQ(r.err.find("timed"), std::string::npos);  // no benchmark ran
+}
+
+}  // namespace

@@ -66,6 +66,21 @@ exact_pair<T> two_prod(const T& a, const T& b) {
   }
 }
 
+// a * b + c with one rounding where T's fma is fused; otherwise the exact
+// product and sum, rounded once at the end but for the low-order parts (within
+// an ulp, and exact where a * b + c cancels, which is where it matters).
+template <class T>
+T fused_multiply_add(const T& a, const T& b, const T& c) {
+  if constexpr (has_fused_fma<T>::value) {
+    using std::fma;
+    return fma(a, b, c);
+  } else {
+    const auto product = two_prod(a, b);
+    const auto sum = two_sum(product.high, c);
+    return sum.high + (sum.low + product.low);
+  }
+}
+
 // Sign (-1, 0, +1) of the exact sum of N numbers, by Shewchuk's grow-expansion:
 // the components stay non-overlapping, so the largest non-zero one has the sign
 // of the whole. Exact while no partial sum overflows.

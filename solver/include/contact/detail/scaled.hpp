@@ -10,6 +10,8 @@
 #include <climits>
 #include <cmath>
 
+#include "float_tools.hpp"
+
 namespace contact::detail {
 
 template <class T>
@@ -65,14 +67,13 @@ struct scaled {
   friend bool operator>(const scaled& a, const scaled& b) { return (a - b).sign() > 0; }
 
   // a * b + c with the single rounding of T's fma.
-  friend scaled fma(const scaled& a, const scaled& b, const scaled& c) {
-    using std::fma;
+  friend scaled fused_multiply_add(const scaled& a, const scaled& b, const scaled& c) {
     if (a.significand == 0 || b.significand == 0) return c;
     long product_exponent = a.exponent + b.exponent;
     if (c.significand == 0 || product_exponent >= c.exponent)
-      return normalized(fma(a.significand, b.significand, shifted(c.significand, c.exponent - product_exponent)),
+      return normalized(fused_multiply_add(a.significand, b.significand, shifted(c.significand, c.exponent - product_exponent)),
                         product_exponent);
-    return normalized(fma(a.significand, shifted(b.significand, product_exponent - c.exponent), c.significand),
+    return normalized(fused_multiply_add(a.significand, shifted(b.significand, product_exponent - c.exponent), c.significand),
                       c.exponent);
   }
 

@@ -1,0 +1,131 @@
+// contact-solve, run as a user runs it: through a shell, on files.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+#include "harness.hpp"
+
+namespace contact::testing {
+namespace {
+
+struct run_result {
+  std::string out, err;
+  int status;
+};
+
+run_result run_cli(const std::string& arguments, const std::string& input) {
+  const std::string dir = ::testing::TempDir();
+  const std::string in = dir + "cli_in.txt", out = dir + "cli_out.txt", err = dir + "cli_err.txt";
+  std::ofstream(in) << input;
+  const std::string command = std::string(CONTACT_SOLVE) + " " + arguments + " " + in + " >" + out + " 2>" + err;
+  const int status = std::system(command.c_str());
+  auto slurp = [](const std::string& path) {
+    std::ifstream f(path);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  return {slurp(out), slurp(err), WIFEXITED(status) ? WEXITSTATUS(status) : -1};
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(ContactSolve, WritesHexStepAndCasePerLine) {
+  const auto r = run_cli("--algo stable --type double", "3 1 3\n0x1p0 -0x1p0 3\n");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, "0x1.8p-1 3\n-0x1p+0 1\n");
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(ContactSolve, KeepsCommentsAndBlankLinesInPlace) {
+  const auto r = run_cli("", "# header\n\n3 1 3 # trailing comment\n");
+  EXPECT_EQ(r.out, "# header\n\n0x1.8p-1 3\n");
+}
+
+TEST(ContactSolve, ReportsEachBadLineInPlaceAndOnStderrWithItsNumber) {
+  const auto r = run_cli("", "3 1 3\n1 2\n1 1 -1\nnan 1 1\n1 1e999 1\nx 1 1\n1 1 1 1\n0x1.8 1 1\n");
+  EXPECT_EQ(r.status, 1);
+  const auto out = lines_of(r.out), err = lines_of(r.err);
+  ASSERT_EQ(out.size(), 8u);
+  EXPECT_EQ(out[0], "0x1.8p-1 3");
+  EXPECT_EQ(out[1], "error expected 3 numbers (u dy phi), found 2");
+  EXPECT_EQ(out[2], "error phi is negative");
+  EXPECT_EQ(out[3], "error u is not finite");
+  EXPECT_EQ(out[4], "error '1e999' overflows double");
+  EXPECT_EQ(out[5], "error 'x' is not a number");
+  EXPECT_EQ(out[6], "error expected 3 numbers (u dy phi), found 4");
+  EXPECT_EQ(out[7], "0x1p-2 3");  // "0x1.8" is a valid hex float: 1.5, and (A.31) gives 1/4
+  ASSERT_EQ(err.size(), 6u);
+  EXPECT_EQ(err[0], "contact-solve: line 2: expected 3 numbers (u dy phi), found 2");
+  EXPECT_EQ(err[5], "contact-solve: line 7: expected 3 numbers (u dy phi), found 4");
+}
+
+TEST(ContactSolve, RejectsUnknownAlgorithmAndUnreadableFile) {
+  EXPECT_EQ(run_cli("--algo bisection", "").status, 2);
+  EXPECT_EQ(std::system((std::string(CONTACT_SOLVE) + " /nonexistent/file 2>/dev/null").c_str()) >> 8, 2);
+}
+
+TEST(ContactSolve, HelpListsAlgorithmsAndTypes) {
+  const auto r = run_cli("--help", "");
+  for (const char* word : {"textbook", "stable", "newton", "float", "double", "long_double", "float128",
+                           "cpp_bin_float_50", "cpp_bin_float_100", "mpfr"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST(ContactSolve, WiderTypesPrintRoundTripDecimals) {
+  for (const char* type : {"long_double", "float128", "cpp_bin_float_50", "cpp_bin_float_100", "mpfr"}) {
+    const auto r = run_cli(std::string("--type ") + type, "3 1 3\n1 1 3\n");
+    const auto out = lines_of(r.out);
+    ASSERT_EQ(out.size(), 2u) << type;
+    EXPECT_EQ(out[0], "0.75 3") << type;
+    EXPECT_EQ(out[1].substr(0, 12), "1.3027756377") << type;  // (A.32): (-1 + sqrt(13)) / 2
+  }
+}
+
+// The closing check of issue 2: over inputs spanning the whole double range,
+// the stable double CLI gives no NaN and no infinity where the root is finite,
+// and stays within the proven bound. Inputs written as hex, read back exactly.
+TEST(ContactSolve, StableDoubleStaysWithinBoundOverTheWholeRange) {
+  std::mt19937_64 random(20261123);
+  std::uniform_int_distribution<int> exponent(-1074, 1023);
+  std::uniform_real_distribution<double> significand(1, 2);
+  auto any = [&] { return std::ldexp(significand(random), exponent(random)) * (random() & 1 ? 1 : -1); };
+  std::vector<input<double>> inputs;
+  std::string text;
+  char line[128];
+  for (int i = 0; i < 20000; ++i) {
+    const input<double> x{any(), any(), std::fabs(any())};
+    inputs.push_back(x);
+    std::snprintf(line, sizeof line, "%a %a %a\n", x.u, x.dy, x.phi);
+    text += line;
+  }
+  const auto r = run_cli("--algo stable --type double", text);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = lines_of(r.out);
+  ASSERT_EQ(out.size(), inputs.size());
+  double worst = 0;
+  int beyond_range = 0;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const double s = std::strtod(out[i].c_str(), nullptr);
+    const auto exact = reference::solve(inputs[i].u, inputs[i].dy, inputs[i].phi);
+    if (!root_is_finite_in<double>(exact)) {
+      ++beyond_range;
+      EXPECT_TRUE(std::isinf(s)) << out[i];
+      continue;
+    }
+    ASSERT_TRUE(std::isfinite(s)) << "line " << i + 1 << ": " << out[i];
+    worst = std::max(worst, reference::ulp_error(s, exact));
+  }
+  RecordProperty("max_ulp", std::to_string(worst));
+  std::printf("contact-solve stable double, 20000 whole-range inputs: max %.3g ulp, %d roots beyond double\n", worst,
+              beyond_range);
+  EXPECT_LE(worst, stable_bound_any());
+}
+
+}  // namespace
+}  // namespace contact::testing
