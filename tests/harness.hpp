@@ -23,9 +23,9 @@ namespace contact::testing {
 
 // ---- the claimed bounds --------------------------------------------------
 
-// Per branch of the stable path, in ulps of T. Branch names as in the Gappa
-// files: stable_impact, stable_contact, stable_release_u_positive,
-// stable_release_u_nonpositive (the free case is exact).
+// Per branch of the stable path, in ulps of T at the exact root. Branch names as
+// in the Gappa files proofs/gappa/stable_<branch>.g: free, impact, contact,
+// release_u_positive, release_u_nonpositive.
 inline const std::map<std::string, double>& claimed_bounds() {
   static const std::map<std::string, double> bounds = [] {
     std::map<std::string, double> result;
@@ -56,10 +56,10 @@ inline double claimed_bound(const std::string& branch) {
 // The stable algorithm's bound for the case (and sign of u) an input falls in.
 inline double stable_bound(contact_case which, bool u_positive) {
   switch (which) {
-    case contact_case::free: return 0;
-    case contact_case::impact: return claimed_bound("stable_impact");
-    case contact_case::contact: return claimed_bound("stable_contact");
-    default: return claimed_bound(u_positive ? "stable_release_u_positive" : "stable_release_u_nonpositive");
+    case contact_case::free: return claimed_bound("free");
+    case contact_case::impact: return claimed_bound("impact");
+    case contact_case::contact: return claimed_bound("contact");
+    default: return claimed_bound(u_positive ? "release_u_positive" : "release_u_nonpositive");
   }
 }
 

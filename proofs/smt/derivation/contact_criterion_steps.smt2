@@ -1,4 +1,6 @@
-; Claim: the derivation (A.17) -> (A.21), corrected: for dy > 0 the side condition s <= dy of the (A.31) formula, i.e. dy >= (2 phi dy - u) / (1 + phi) [(A.20) printed as dy <= (u - 2 phi dy) / (1 + phi)], is equivalent to u >= dy (phi - 1) (A.21).
+; Claim: the derivation (A.17) -> (A.21), corrected: for dy > 0 the side condition s <= dy
+; of the (A.31) formula, i.e. dy >= (2 phi dy - u) / (1 + phi) [(A.20) printed as dy <= (u
+; - 2 phi dy) / (1 + phi)], is equivalent to u >= dy (phi - 1) (A.21).
 ; expect: unsat
 ; show: u dy phi
 (set-logic QF_NRA)

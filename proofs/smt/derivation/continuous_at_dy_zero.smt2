@@ -1,4 +1,6 @@
-; Claim: s is continuous across dy = 0: at dy = 0 the (A.31) formula (the limit dy -> 0+ for u >= 0) equals (A.30) for u > 0 and (A.29) for u = 0, and the (A.32) formula (the limit for u < 0) equals (A.29).
+; Claim: s is continuous across dy = 0: at dy = 0 the (A.31) formula (the limit dy -> 0+
+; for u >= 0) equals (A.30) for u > 0 and (A.29) for u = 0, and the (A.32) formula (the
+; limit for u < 0) equals (A.29).
 ; expect: unsat
 ; show: u dy phi r1 r2
 (set-logic QF_NRA)

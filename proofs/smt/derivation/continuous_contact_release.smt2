@@ -1,4 +1,5 @@
-; Claim: s is continuous across u = dy (phi - 1) (dy > 0): the (A.32) formula on the boundary gives the (A.31) value, s = dy.
+; Claim: s is continuous across u = dy (phi - 1) (dy > 0): the (A.32) formula on the
+; boundary gives the (A.31) value, s = dy.
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

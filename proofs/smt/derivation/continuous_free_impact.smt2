@@ -1,4 +1,5 @@
-; Claim: s is continuous across u = -dy (dy <= 0): the (A.30) formula, evaluated on the boundary (its discriminant is u^2 there), gives the (A.29) value s = -u = dy.
+; Claim: s is continuous across u = -dy (dy <= 0): the (A.30) formula, evaluated on the
+; boundary (its discriminant is u^2 there), gives the (A.29) value s = -u = dy.
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

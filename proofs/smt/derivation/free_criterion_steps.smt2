@@ -1,4 +1,5 @@
-; Claim: the derivation (A.4) -> (A.6): for dy <= 0 the side condition s >= dy of s = -u (A.5) is equivalent to u <= -dy (A.6).
+; Claim: the derivation (A.4) -> (A.6): for dy <= 0 the side condition s >= dy of s = -u
+; (A.5) is equivalent to u <= -dy (A.6).
 ; expect: unsat
 ; show: u dy phi
 (set-logic QF_NRA)

@@ -1,4 +1,5 @@
-; Claim: (A.2) is homogeneous of degree one in (s, u, dy): for k > 0, s solves it for (u, dy, phi) exactly when k s solves it for (k u, k dy, phi).
+; Claim: (A.2) is homogeneous of degree one in (s, u, dy): for k > 0, s solves it for (u,
+; dy, phi) exactly when k s solves it for (k u, k dy, phi).
 ; expect: unsat
 ; show: u dy phi s k
 (set-logic QF_NRA)

@@ -1,4 +1,7 @@
-; Claim: the derivation (A.12) -> (A.15), corrected: for dy < 0 (as the text assumes) the side condition (A.7) of the (A.30) root, dy > s, is equivalent to (2 dy + u)^2 < u^2 - 4 phi dy (u + dy) [(A.13) printed with >], to dy (dy + u) (1 + phi) < 0 [(A.14) printed with >], to dy + u > 0 [the text says < 0], and to u > -dy (A.15).
+; Claim: the derivation (A.12) -> (A.15), corrected: for dy < 0 (as the text assumes) the
+; side condition (A.7) of the (A.30) root, dy > s, is equivalent to (2 dy + u)^2 < u^2 - 4
+; phi dy (u + dy) [(A.13) printed with >], to dy (dy + u) (1 + phi) < 0 [(A.14) printed
+; with >], to dy + u > 0 [the text says < 0], and to u > -dy (A.15).
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

@@ -1,4 +1,6 @@
-; Claim: the discriminant u^2 - 4 phi dy (u + dy) of (A.30) is non-negative on the closure of its case (dy <= 0, u >= -dy), so its square root exists there, and positive inside the case, as the text after (A.10) says.
+; Claim: the discriminant u^2 - 4 phi dy (u + dy) of (A.30) is non-negative on the closure
+; of its case (dy <= 0, u >= -dy), so its square root exists there, and positive inside
+; the case, as the text after (A.10) says.
 ; expect: unsat
 ; show: u dy phi
 (set-logic QF_NRA)

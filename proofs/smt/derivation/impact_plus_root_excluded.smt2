@@ -1,4 +1,6 @@
-; Claim: in case (A.30) the other root of (A.9), with + sqrt in (A.10), is >= dy, against (A.7): this, not its sign, is why (A.11) takes the - root (both roots are <= 0, see errata/a10_root_choice).
+; Claim: in case (A.30) the other root of (A.9), with + sqrt in (A.10), is >= dy, against
+; (A.7): this, not its sign, is why (A.11) takes the - root (both roots are <= 0, see
+; errata/a10_root_choice).
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

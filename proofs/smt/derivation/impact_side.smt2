@@ -1,4 +1,5 @@
-; Claim: in case (A.30) the formula lies on the side (A.7) claims: s < dy, i.e. num < dy den (den > 0).
+; Claim: in case (A.30) the formula lies on the side (A.7) claims: s < dy, i.e. num < dy
+; den (den > 0).
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

@@ -1,4 +1,5 @@
-; Claim: for dy > 0 and s <= dy (A.17), (A.2) reduces to (1 + phi) s + u - 2 phi dy = 0 (A.18).
+; Claim: for dy > 0 and s <= dy (A.17), (A.2) reduces to (1 + phi) s + u - 2 phi dy = 0
+; (A.18).
 ; expect: unsat
 ; show: u dy phi s
 (set-logic QF_NRA)

@@ -1,4 +1,5 @@
-; Claim: for dy > 0 and s > dy (A.22), (A.2) reduces to s^2 + u s - phi dy^2 = 0 ((A.23) with its constant term's sign corrected).
+; Claim: for dy > 0 and s > dy (A.22), (A.2) reduces to s^2 + u s - phi dy^2 = 0 ((A.23)
+; with its constant term's sign corrected).
 ; expect: unsat
 ; show: u dy phi s
 (set-logic QF_NRA)

@@ -1,4 +1,5 @@
-; Claim: for dy <= 0 and s < dy (A.7), (A.2) reduces to (A.8) and, multiplied by s, to (A.9): (1 + phi) s^2 + (u - 2 phi dy) s + phi dy^2 = 0.
+; Claim: for dy <= 0 and s < dy (A.7), (A.2) reduces to (A.8) and, multiplied by s, to
+; (A.9): (1 + phi) s^2 + (u - 2 phi dy) s + phi dy^2 = 0.
 ; expect: unsat
 ; show: u dy phi s
 (set-logic QF_NRA)

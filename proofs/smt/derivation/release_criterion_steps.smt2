@@ -1,4 +1,6 @@
-; Claim: the derivation (A.26) -> (A.28): for dy > 0 the side condition s > dy of the (A.32) root, 2 dy < -u + sqrt(u^2 + 4 phi dy^2) (A.26), is equivalent to u^2 + 4 phi dy^2 > (2 dy + u)^2 (A.27) and to u < dy (phi - 1) (A.28).
+; Claim: the derivation (A.26) -> (A.28): for dy > 0 the side condition s > dy of the
+; (A.32) root, 2 dy < -u + sqrt(u^2 + 4 phi dy^2) (A.26), is equivalent to u^2 + 4 phi
+; dy^2 > (2 dy + u)^2 (A.27) and to u < dy (phi - 1) (A.28).
 ; expect: unsat
 ; show: u dy phi r
 ; cvc5-options: --simplification=none

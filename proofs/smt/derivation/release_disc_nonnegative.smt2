@@ -1,4 +1,5 @@
-; Claim: the discriminant u^2 + 4 phi dy^2 of (A.32) is non-negative for every input, so its square root exists.
+; Claim: the discriminant u^2 + 4 phi dy^2 of (A.32) is non-negative for every input, so
+; its square root exists.
 ; expect: unsat
 ; show: u dy phi
 (set-logic QF_NRA)

@@ -1,4 +1,5 @@
-; Claim: in case (A.32) the other root of (A.23) corrected, with - sqrt in (A.24), is <= 0 < dy, against (A.22), so (A.25) takes the + root.
+; Claim: in case (A.32) the other root of (A.23) corrected, with - sqrt in (A.24), is <= 0
+; < dy, against (A.22), so (A.25) takes the + root.
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

@@ -23,6 +23,7 @@
 (assert (=> (and (<= dy 0.0) (< s1 dy)) (<= q1 0.0)))
 
 (assert (=> (and (<= dy 0.0) (< s2 dy)) (= (* q1 s1 s2) (* (- dy s1) (- dy s1) s2))))
+(assert (=> (and (<= dy 0.0) (< s2 dy)) (= (* q2 s2) (* (- dy s2) (- dy s2)))))
 (assert (=> (and (<= dy 0.0) (< s2 dy)) (= (* q2 s1 s2) (* (- dy s2) (- dy s2) s1))))
 (assert (=> (and (<= dy 0.0) (< s2 dy)) (< (* (- q1 q2) s1 s2) 0.0)))
 (assert (=> (and (<= dy 0.0) (< s2 dy)) (< q1 q2)))

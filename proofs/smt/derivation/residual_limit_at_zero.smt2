@@ -1,6 +1,6 @@
 ; Claim: the difference quotient q(s) = (floor(dy - s)^2 - floor(dy)^2) / s satisfies
-; |q(s) + 2 floor(dy)| <= |s| for every s /= 0 near 0 (s <= dy when dy > 0; any s when
-; dy <= 0), so q -> -2 floor(dy) as s -> 0: the value that prelude's `solves` and
+; |q(s) + 2 floor(dy)| <= |s| for every s /= 0 near 0 (s <= dy when dy > 0; any s when dy
+; <= 0), so q -> -2 floor(dy) as s -> 0: the value that prelude's `solves` and
 ; `quotient_is` give (A.2) at s = 0 is its continuous extension.
 ; expect: unsat
 ; show: dy s q
