@@ -93,9 +93,18 @@ struct safe_window {
 
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
 // enters as the exact pair of two_prod; the sign is then that of an exact sum.
+//
+// Most inputs are far from the boundary: e = (u + dy) - phi dy in two roundings
+// is within eps (|u + dy| + |e|) of the exact value, so outside the margin
+// 4 eps (|u| + |dy| + |phi dy|) its sign is the exact sign, and only inputs
+// within a few ulps of the boundary pay for the exact sum.
 template <class T>
 bool stays_in_contact(const T& u, const T& dy, const T& phi, bool plain) {
   if (plain) {
+    using std::fabs;
+    const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
+    const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + fabs(dy) + fabs(phi * dy));
+    if (fabs(estimate) > margin) return estimate > 0;
     const auto product = two_prod(phi, dy);
     const T terms[4] = {u, dy, -product.high, -product.low};
     return sign_of_exact_sum(terms) >= 0;
