@@ -153,8 +153,9 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, int& which_out) 
   s = pick(is_release & mask<T>(!(unclamped > dy)), std::bit_cast<T>(U(dy_bits + 1)), s);
 
   s_out = s;
-  // the case number 1 + [impact] + 2 [dy > 0] + [release]
-  which_out = static_cast<int>(1 + (is_impact & 1) + (contact_before & 2) + (is_release & 1));
+  // the case number 1 + [impact] + 2 [dy > 0] + [release]; a true mask is -1
+  using S = std::make_signed_t<U>;
+  which_out = static_cast<int>(S(1) - S(is_impact) - S(2) * S(contact_before) - S(is_release));
   return inside & (no_contact_before | decided);
 }
 

@@ -221,7 +221,8 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, j
       const auto *floor = throughput_of(*rows, "floor"), *batch = throughput_of(*rows, "batch"),
                  *stable = throughput_of(*rows, "stable"), *textbook = throughput_of(*rows, "textbook");
       if (!floor || !batch || !stable || !textbook) continue;
-      md << "| " << floor->lanes << " | " << format_ns(floor->median) << " | " << format_ns(batch->median) << " | "
+      md << "| " << floor->lanes << (rows == &r.throughput ? " (streamed)" : " (in cache)") << " | "
+         << format_ns(floor->median) << " | " << format_ns(batch->median) << " | "
          << format_ns(stable->median) << " | " << format_ns(textbook->median) << " | **"
          << format_ratio(textbook->median / batch->median) << "** | " << format_ratio(stable->median / batch->median)
          << " | **" << format_ratio(batch->median / floor->median) << "** |\n";
@@ -236,7 +237,9 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, j
           {"speedup_over_stable", number(stable->median / batch->median)},
           {"batch_to_floor", number(batch->median / floor->median)}};
     }
-    md << "\nTargets of issue 5: batch at least 8 times faster than scalar textbook, and within 1.5 times the floor.\n\n";
+    md << "\nTargets of issue 5: batch at least 8 times faster than scalar textbook on mixed-case data, and within 1.5 "
+          "times the floor (the streamed row). The in-cache row repeats a short array, whose branches a branch "
+          "predictor partly learns by heart: it flatters the scalar paths.\n\n";
   }
 
   for (const auto& r : scenes) {
@@ -251,7 +254,7 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, j
   }
 }
 
-void write_method(std::ostream& md, const std::vector<scene_result>& scenes, const run_info& info) {
+void write_method(std::ostream& md, const run_info& info) {
   md << "## Method\n\n"
         "- **Reference.** Every input is solved by `contact::reference::solve` (MPFR and GMP): the case is decided "
         "in exact rational arithmetic, the root computed at 256 bits or more (four times the widest type's precision "
@@ -285,7 +288,6 @@ void write_method(std::ostream& md, const std::vector<scene_result>& scenes, con
         "the parameters and state as the type holds them, so the figure is the drift of the simulation, not the "
         "rounding of H. The energy error with H evaluated in the type itself is in results.csv/json.\n"
         "- **Build.** " << info.compiler << ", flags `" << info.flags << "` for every algorithm alike.\n\n";
-  (void)scenes;
 }
 
 void write_scene(std::ostream& md, const scene_result& r, const std::vector<std::string>& plots) {
@@ -553,10 +555,9 @@ bool write_report(const std::string& directory, const std::vector<scene_result>&
   write_headline(head, scenes, headline);
   md << head.str();
   if (!plotted) md << "_gnuplot failed or is missing: no plots._\n\n";
-  write_method(md, scenes, info);
+  write_method(md, info);
   for (const auto& r : scenes) write_scene(md, r, plots);
   {
-    std::set<std::string> listed;
     std::string hist;
     for (const auto& name : plots)
       if (name.rfind("hist_", 0) == 0) hist += plot_link(name, plots, "Error histogram, " + name.substr(5));

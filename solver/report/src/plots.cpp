@@ -79,7 +79,7 @@ bool write_plots(const std::string& directory, const std::vector<scene_result>& 
     begin(gp, name, "Scene " + r.s.name + ": error against run time (filled: max, open: 99th percentile)");
     gp << "set logscale xy\nset xlabel 'ns per solve (median; bars: min to max over repetitions)'\n"
        << "set ylabel " << quoted(std::string("ulp error (0 drawn at 1e-3") + (clamped_inf ? "; 1e19 and above, inf and NaN at 1e19)" : ")"))
-       << "\nset yrange [5e-4:1e21]\nset format y '%g'\nplot ";
+       << "\nset yrange [5e-4:*]\nset format y '%g'\nplot ";
     for (std::size_t i = 0; i < points.size(); ++i) {
       const int colour = static_cast<int>(i % 8) + 1, shape = static_cast<int>(i / 8) * 4 + 5;
       gp << (i ? ", \\\n  " : "") << quoted(name + ".dat") << " index " << i << " using 1:2:3:4 with xerrorbars lc "
@@ -110,13 +110,20 @@ bool write_plots(const std::string& directory, const std::vector<scene_result>& 
     const std::string name = "hist_" + type + "_" + algorithm;
     std::ofstream dat(dir / (name + ".dat"));
     for (int b = first; b <= last; ++b) {
-      dat << b << " \"" << histogram_label(b) << "\"";
+      // tick labels: the bin's upper edge, on every fourth power of two
+      std::string tick;
+      if (b <= 2) tick = b == 0 ? "0" : (b == 1 ? "0.5" : "1");
+      else if (b == 63) tick = ">2^60";
+      else if (b == 64) tick = "NaN";
+      else if (last - first <= 16 || (b - 2) % 4 == 0) tick = "2^" + std::to_string(b - 2);
+      dat << b << " \"" << tick << "\"";
       for (const auto& [scene, a] : lines)
         dat << " " << value(double(a->histogram[static_cast<std::size_t>(b)]) / double(std::max(1L, a->samples)));
       dat << "\n";
     }
     begin(gp, name, label(type) + ", " + label(algorithm) + ": distribution of the ulp error");
-    gp << "set logscale y\nset xlabel 'ulp error'\nset ylabel 'fraction of samples'\nset xtics rotate by -45\n"
+    gp << "set logscale y\nset xlabel 'ulp error (upper edge of each bin; bins double from 1 ulp on)'\n"
+       << "set ylabel 'fraction of samples'\nset xtics rotate by -45\n"
        << "set xrange [" << first - 0.5 << ":" << last + 0.5 << "]\nset style data linespoints\nplot ";
     for (std::size_t i = 0; i < lines.size(); ++i)
       gp << (i ? ", \\\n  " : "") << quoted(name + ".dat") << " using 1:" << i + 3 << (i == 0 ? ":xtic(2)" : "")

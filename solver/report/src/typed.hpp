@@ -143,9 +143,9 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
 
 template <class T>
 void register_timings(const run& r, const std::vector<input>& lanes, const std::string& prefix) {
-  struct arrays {
-    std::vector<T> u, dy, phi, s;
-    std::vector<int> which;
+  struct arrays {  // aligned to the vector width, as Eigen arrays are
+    std::vector<T, Eigen::aligned_allocator<T>> u, dy, phi, s;
+    std::vector<int, Eigen::aligned_allocator<int>> which;
   };
   auto data = std::make_shared<arrays>();
   const std::size_t n = lanes.size();
@@ -156,31 +156,33 @@ void register_timings(const run& r, const std::vector<input>& lanes, const std::
   }
   data->s.resize(n);
   data->which.resize(n);
-  for (method m : r.methods) {
-    const std::string name = prefix + std::string(contact::type_name<T>) + "|" + name_of(m);
-    benchmark::internal::Benchmark* b;
-    if (m == method::batch) {
-      b = benchmark::RegisterBenchmark(name.c_str(), [data, n](benchmark::State& state) {
-        for (auto _ : state) {
-          contact::solve_batch(data->u.data(), data->dy.data(), data->phi.data(), data->s.data(), data->which.data(),
-                               static_cast<std::ptrdiff_t>(n));
-          benchmark::ClobberMemory();
-        }
-        state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
-      });
-    } else {
-      b = benchmark::RegisterBenchmark(name.c_str(), [data, n, m](benchmark::State& state) {
-        for (auto _ : state) {
-          for (std::size_t i = 0; i < n; ++i) {
-            auto result = solve_one(m, data->u[i], data->dy[i], data->phi[i]);
-            benchmark::DoNotOptimize(result);
+  // Repetition-major: round k times every method once, so that a change of the
+  // machine's load during the run hits all methods alike. "#k" ends the name.
+  for (int round = 0; round < r.repetitions; ++round)
+    for (method m : r.methods) {
+      const std::string name =
+          prefix + std::string(contact::type_name<T>) + "|" + name_of(m) + "#" + std::to_string(round);
+      benchmark::internal::Benchmark* b;
+      if (m == method::batch) {
+        b = benchmark::RegisterBenchmark(name.c_str(), [data, n](benchmark::State& state) {
+          for (auto _ : state) {
+            contact::solve_batch(data->u.data(), data->dy.data(), data->phi.data(), data->s.data(), data->which.data(),
+                                 static_cast<std::ptrdiff_t>(n));
+            benchmark::ClobberMemory();
           }
-        }
-        state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
-      });
+        });
+      } else {
+        b = benchmark::RegisterBenchmark(name.c_str(), [data, n, m](benchmark::State& state) {
+          for (auto _ : state) {
+            for (std::size_t i = 0; i < n; ++i) {
+              auto result = solve_one(m, data->u[i], data->dy[i], data->phi[i]);
+              benchmark::DoNotOptimize(result);
+            }
+          }
+        });
+      }
+      b->Repetitions(1)->MinTime(r.min_time)->MinWarmUpTime(r.min_time / 2)->Unit(benchmark::kNanosecond);
     }
-    b->Repetitions(r.repetitions)->MinTime(r.min_time)->MinWarmUpTime(r.min_time / 2)->Unit(benchmark::kNanosecond);
-  }
 }
 
 // The energy-conserving oscillator of context.md in T, stepped with method m.

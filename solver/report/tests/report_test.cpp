@@ -275,7 +275,9 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
     EXPECT_TRUE(same(summary.median, value_of(a["median_ulp"])));
     EXPECT_EQ(nan, a["nan"].get<long>());
     EXPECT_EQ(inf, a["inf"].get<long>());
-    if (type == "double") EXPECT_EQ(violations, a["complementarity_violations"].get<long>());
+    if (type == "double") {
+      EXPECT_EQ(violations, a["complementarity_violations"].get<long>());
+    }
     for (const auto& [family, worst] : family_max) EXPECT_TRUE(same(worst, value_of(a["family_max_ulp"][family])));
 
     // The raw s is what the named algorithm gives, and its error is what the reference says.
@@ -405,7 +407,9 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
     EXPECT_EQ(worst, value_of(e["max_relative_error"]));
     EXPECT_EQ(e["steps"].get<long>(), 882);
     for (const auto& row : energy_rows)
-      if (row[0] == e["type"] && row[1] == e["algorithm"]) EXPECT_EQ(row[3], report::format_energy(worst));
+      if (row[0] == e["type"] && row[1] == e["algorithm"]) {
+        EXPECT_EQ(row[3], report::format_energy(worst));
+      }
   }
 }
 
