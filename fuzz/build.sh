@@ -11,8 +11,9 @@
 #   contact_T.dict             its dictionary of interesting values
 #   contact_T.options          max_len and dict, for OSS-Fuzz
 #   contact_T_seed_corpus.zip  fuzz/corpus/T plus fuzz/regressions/T
-#   contact_claimed_bounds.txt the proven bounds, read by the fuzzers from
-#                              their own directory at start-up
+#   contact_claimed_bounds.txt (OSS-Fuzz builds) a copy of proofs/claimed_bounds.txt,
+#                              read by the fuzzers from their own directory
+#                              at start-up; local builds read the original
 #
 # Other knobs: JOBS (parallel compiles, default 2), CONTACT_FUZZ_TARGETS (a
 # subset, space separated). A target is recompiled only when a source or the
@@ -72,21 +73,18 @@ static_or_dynamic() {  # library name
 }
 libs=("$(static_or_dynamic mpfr)" "$(static_or_dynamic gmp)" "${quadmath_lib[@]}")
 
-# --- the proven bounds, copied next to the fuzzers and found there at run time.
+# --- the proven bounds. A local build reads proofs/claimed_bounds.txt itself at
+# start-up; an OSS-Fuzz build (LIB_FUZZING_ENGINE set) gets a copy next to the
+# fuzzers, found there at run time (the source tree is not on the fuzzing bots).
 bounds="$root/proofs/claimed_bounds.txt"
-if [[ -f "$bounds" ]]; then
-  cp "$bounds" "$OUT/contact_claimed_bounds.txt"
-else
+[[ -f "$bounds" ]] || echo "build.sh: $bounds is missing: the fuzzers will refuse to start" >&2
+if [[ $local_build == 1 ]]; then
   rm -f "$OUT/contact_claimed_bounds.txt"
-  if [[ -f "$here/provisional_bound.txt" ]]; then
-    provisional=$(grep -v '^#' "$here/provisional_bound.txt" | tr -d ' \n')
-    echo "build.sh: $bounds is missing: using the provisional bound $provisional ulps (fuzz/provisional_bound.txt)" >&2
-    defines+=(-DCONTACT_PROVISIONAL_BOUND="$provisional")
-  else
-    echo "build.sh: $bounds is missing (and fuzz/provisional_bound.txt is gone): the fuzzers will refuse to start" >&2
-  fi
+  defines+=(-DCONTACT_CLAIMED_BOUNDS="\"$bounds\"")
+else
+  [[ -f "$bounds" ]] && cp "$bounds" "$OUT/contact_claimed_bounds.txt"
+  defines+=(-DCONTACT_CLAIMED_BOUNDS='"contact_claimed_bounds.txt"')
 fi
-defines+=(-DCONTACT_CLAIMED_BOUNDS='"contact_claimed_bounds.txt"')
 
 declare -A max_len=([differential]=24 [cancellation]=24 [invariants]=27 [high_precision]=48)
 declare -A dict=([differential]=double [cancellation]=double [invariants]=invariants [high_precision]=high_precision)

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -147,6 +148,16 @@ inline const char*& current_input_name() {
   return name;
 }
 
+// The replay tool throws this instead of aborting, to report every failing file.
+struct finding : std::exception {
+  const char* what() const noexcept override { return "contact-fuzz finding"; }
+};
+
+inline bool& throw_on_finding() {
+  static bool enabled = false;
+  return enabled;
+}
+
 // Prints a finding and aborts: libFuzzer saves the input as a crash artifact,
 // the replay test fails.
 [[noreturn]] inline void fail(const char* target, const std::string& what, const std::string& details) {
@@ -155,6 +166,7 @@ inline const char*& current_input_name() {
   std::fprintf(stderr, "%s", details.c_str());
   std::fprintf(stderr, "==contact-fuzz== end of report\n");
   std::fflush(stderr);
+  if (throw_on_finding()) throw finding();
   std::abort();
 }
 
@@ -171,10 +183,8 @@ std::string describe_input(const triple<T>& x) {
 // ---- the proven bound ---------------------------------------------------------
 
 // The largest of the per-branch bounds in proofs/claimed_bounds.txt: the last
-// number on each non-comment line ('#' starts a comment). A missing file is an
-// error unless the build allows the provisional bound (CONTACT_PROVISIONAL_BOUND,
-// used only until the proofs land); an existing file without a bound always is.
-// A relative path is taken from the directory of the executable (OSS-Fuzz
+// number on each non-comment line ('#' starts a comment). A missing file, or one
+// without a bound, is a fatal error at start-up. A relative path is taken from the directory of the executable (OSS-Fuzz
 // copies the file next to the fuzzers).
 inline std::string bounds_path() {
   if (const char* override_path = std::getenv("CONTACT_CLAIMED_BOUNDS")) return override_path;
@@ -203,16 +213,8 @@ inline double load_stable_bound() {
   bound_source() = path;
   std::ifstream in(path);
   if (!in) {
-#ifdef CONTACT_PROVISIONAL_BOUND
-    std::fprintf(stderr,
-                 "==contact-fuzz== WARNING: %s is missing; using the provisional stable bound %g ulps\n",
-                 path.c_str(), double(CONTACT_PROVISIONAL_BOUND));
-    bound_source() = "provisional: " + path + " is missing";
-    return CONTACT_PROVISIONAL_BOUND;
-#else
     std::fprintf(stderr, "==contact-fuzz== FATAL: cannot read the claimed bounds file %s\n", path.c_str());
     std::exit(2);
-#endif
   }
   double largest = -1;
   std::string line;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdlib>
 #include <utility>
 
 namespace contact::fuzz {
@@ -20,11 +21,17 @@ constexpr std::array<void (*)(), sizeof...(K)> bucket_table(std::integer_sequenc
   return {&bucket_reached<Family, K>...};
 }
 
+// $CONTACT_FUZZ_NO_FEEDBACK turns the feedback off, to measure what it brings.
+inline bool feedback_enabled() {
+  static const bool enabled = std::getenv("CONTACT_FUZZ_NO_FEEDBACK") == nullptr;
+  return enabled;
+}
+
 // feedback<Family, N>(k): marks bucket k (0 <= k < N) of a family as reached.
 template <int Family, int N>
 inline void feedback(int k) {
   static constexpr auto table = bucket_table<Family>(std::make_integer_sequence<int, N>{});
-  if (0 <= k && k < N) table[k]();
+  if (0 <= k && k < N && feedback_enabled()) table[k]();
 }
 
 }  // namespace contact::fuzz

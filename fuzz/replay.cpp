@@ -5,7 +5,8 @@
 //
 // Each PATH is a file or a directory whose regular files (not starting with
 // '.', and not README*) are replayed in name order. A path that does not exist
-// is an error. A failing check prints its report and aborts, naming the file.
+// is an error. Every failing check prints its report, naming the file; the
+// exit status is then 1.
 // --stats prints, at the end, the worst error per algorithm and type.
 #include <dirent.h>
 #include <sys/stat.h>
@@ -74,17 +75,29 @@ int main(int argc, char** argv) {
   const double bound = contact::fuzz::stable_bound();
   std::printf("stable bound: %g ulps (from %s)\n", bound, contact::fuzz::bound_source().c_str());
   std::fflush(stdout);
+  contact::fuzz::throw_on_finding() = true;
+  std::vector<std::string> failing;
   for (const std::string& file : files) {
     std::ifstream in(file, std::ios::binary);
     const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     contact::fuzz::current_input_name() = file.c_str();
-    if (!contact::fuzz::run_check(target, bytes.data(), bytes.size())) {
-      std::fprintf(stderr, "contact-fuzz-replay: unknown target %s\n", target.c_str());
-      return 2;
+    try {
+      if (!contact::fuzz::run_check(target, bytes.data(), bytes.size())) {
+        std::fprintf(stderr, "contact-fuzz-replay: unknown target %s\n", target.c_str());
+        return 2;
+      }
+    } catch (const contact::fuzz::finding&) {
+      failing.push_back(file);
     }
   }
   contact::fuzz::current_input_name() = nullptr;
-  std::printf("replayed %zu inputs through '%s': no finding\n", files.size(), target.c_str());
+  std::fflush(stderr);
   if (print_stats) contact::fuzz::stats().print(stdout);
+  if (!failing.empty()) {
+    std::printf("replayed %zu inputs through '%s': %zu FAILED\n", files.size(), target.c_str(), failing.size());
+    for (const auto& file : failing) std::printf("  failed: %s\n", file.c_str());
+    return 1;
+  }
+  std::printf("replayed %zu inputs through '%s': no finding\n", files.size(), target.c_str());
   return 0;
 }

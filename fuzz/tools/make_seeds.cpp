@@ -108,6 +108,9 @@ std::vector<case_seed> case_seeds() {
       {"release_huge_positive", 1e250, 1e300, 1e300},
       {"release_huge_negative", -1e300, 1e300, 1e300},
       {"release_tiny", 1e-320, 1e-300, 1e20},
+      // u = dy (phi - 1) exactly with phi dy inexact, outside the plain window: the
+      // exact sign test of the scaled path sums four non-zero terms to zero
+      {"boundary_contact_release_scaled", std::ldexp(3.0, 548), std::ldexp(3.0, 600), 1 + std::ldexp(1.0, -52)},
       // the textbook algorithm's troubles: cancellation and overflow
       {"textbook_contact_cancels", 2.0000000001e-5, 1e-5, 1.0},
       {"textbook_release_cancels", 1e19, 1.0, 1e20},
@@ -171,6 +174,23 @@ int main(int argc, char** argv) {
       hl.insert(hl.end(), l.begin(), l.end());
     }
     write(dir + "/corpus/high_precision/" + c.name + "_long_double", hl);
+  }
+  // the same exact boundary outside the plain windows of float128 (2^4065) and
+  // long double (2^4078): u = dy (phi - 1) with phi dy inexact
+  {
+    bytes q;
+    for (__float128 x : {ldexpq(3, 4888), ldexpq(3, 5000), 1 + ldexpq(1, -112)}) {
+      bytes b = of_float128(x);
+      q.insert(q.end(), b.begin(), b.end());
+    }
+    write(dir + "/corpus/high_precision/boundary_contact_release_scaled_float128", q);
+    bytes l;
+    for (long double x : {std::ldexp(3.0L, 4937), std::ldexp(3.0L, 5000), 1 + std::ldexp(1.0L, -63)}) {
+      bytes b = of_long_double(x);
+      b.resize(16, 0);
+      l.insert(l.end(), b.begin(), b.end());
+    }
+    write(dir + "/corpus/high_precision/boundary_contact_release_scaled_long_double", l);
   }
   return 0;
 }
