@@ -65,6 +65,36 @@ TEST(ContactSolve, ReportsEachBadLineInPlaceAndOnStderrWithItsNumber) {
   EXPECT_EQ(err[5], "contact-solve: line 7: expected 3 numbers (u dy phi), found 4");
 }
 
+TEST(ContactSolve, ExplainsEachMalformedNumber) {
+  const auto r = run_cli("", "0x1.8.8 1 1\n0x 1 1\n0x1q3 1 1\n0x1p 1 1\n0x1pz 1 1\n1.5x 1 1\n1 inf 1\n1 1 nan\n+0x1p-2 -0x1P-1 3\n");
+  const auto out = lines_of(r.out);
+  ASSERT_EQ(out.size(), 9u);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(out[i].substr(0, 7), "error '") << out[i];
+  EXPECT_EQ(out[6], "error dy is not finite");
+  EXPECT_EQ(out[7], "error phi is not finite");
+  EXPECT_EQ(out[8], "-0x1p-2 1");  // u = 1/4, dy = -1/2: (A.29), s = -u
+  EXPECT_EQ(lines_of(r.err).size(), 8u);
+}
+
+TEST(ContactSolve, RejectsMalformedNumbersInWiderTypes) {
+  const auto r = run_cli("--type cpp_bin_float_50", "abc 1 1\n1e5000000000000 1 1\n3 1 3\n");
+  const auto out = lines_of(r.out);
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[0], "error 'abc' is not a number");
+  EXPECT_EQ(out[2], "0.75 3");
+  EXPECT_EQ(r.status, 1);
+}
+
+TEST(ContactSolve, ReadsStandardInputWithoutAFile) {
+  const std::string in = ::testing::TempDir() + "stdin.txt", out = ::testing::TempDir() + "stdout.txt";
+  std::ofstream(in) << "3 1 3\n";
+  ASSERT_EQ(std::system((std::string(CONTACT_SOLVE) + " --type float <" + in + " >" + out).c_str()), 0);
+  std::ifstream result(out);
+  std::string line;
+  std::getline(result, line);
+  EXPECT_EQ(line, "0x1.8p-1 3");
+}
+
 TEST(ContactSolve, RejectsUnknownAlgorithmAndUnreadableFile) {
   EXPECT_EQ(run_cli("--algo bisection", "").status, 2);
   EXPECT_EQ(std::system((std::string(CONTACT_SOLVE) + " /nonexistent/file 2>/dev/null").c_str()) >> 8, 2);

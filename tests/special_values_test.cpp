@@ -65,6 +65,27 @@ TEST_P(EveryAlgorithm, EachCaseOnAPlainInput) {
   }
 }
 
+TEST(Cases, EachCaseNamesItsEquation) {
+  EXPECT_EQ(equation_of(contact_case::free), "(A.29)");
+  EXPECT_EQ(equation_of(contact_case::impact), "(A.30)");
+  EXPECT_EQ(equation_of(contact_case::contact), "(A.31)");
+  EXPECT_EQ(equation_of(contact_case::release), "(A.32)");
+  EXPECT_EQ(equation_of(contact_case::invalid), "invalid");
+}
+
+TEST(Cases, AnInvalidResultLiesOnNoSide) {
+  EXPECT_FALSE(lies_on_its_side(contact_case::invalid, 0.0, 0.0));
+  EXPECT_FALSE(lies_on_its_side(contact_case::invalid, nan, 1.0));
+}
+
+TEST(Types, EveryNamedTypeDispatchesAndAnUnknownNameDoesNot) {
+  int called = 0;
+  for (auto name : type_names) EXPECT_TRUE(with_type(name, [&](auto) { ++called; })) << name;
+  EXPECT_EQ(called, 7);
+  EXPECT_FALSE(with_type("half", [&](auto) { ++called; }));
+  EXPECT_EQ(called, 7);
+}
+
 // Inputs that broke an earlier version or sit on a knife edge (hex, exact).
 // Each line: the stable answer's error against the reference, within bound.
 TEST(StableHardCases, ListedInputsStayWithinBound) {
