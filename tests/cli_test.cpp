@@ -16,8 +16,9 @@ struct run_result {
 };
 
 run_result run_cli(const std::string& arguments, const std::string& input) {
-  const std::string dir = ::testing::TempDir();
-  const std::string in = dir + "cli_in.txt", out = dir + "cli_out.txt", err = dir + "cli_err.txt";
+  // ctest runs these tests in parallel processes: each gets files of its own
+  const std::string dir = ::testing::TempDir() + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string in = dir + ".in", out = dir + ".out", err = dir + ".err";
   std::ofstream(in) << input;
   const std::string command = std::string(CONTACT_SOLVE) + " " + arguments + " " + in + " >" + out + " 2>" + err;
   const int status = std::system(command.c_str());
@@ -86,7 +87,7 @@ TEST(ContactSolve, RejectsMalformedNumbersInWiderTypes) {
 }
 
 TEST(ContactSolve, ReadsStandardInputWithoutAFile) {
-  const std::string in = ::testing::TempDir() + "stdin.txt", out = ::testing::TempDir() + "stdout.txt";
+  const std::string in = ::testing::TempDir() + "stdin_test.in", out = ::testing::TempDir() + "stdin_test.out";
   std::ofstream(in) << "3 1 3\n";
   ASSERT_EQ(std::system((std::string(CONTACT_SOLVE) + " --type float <" + in + " >" + out).c_str()), 0);
   std::ifstream result(out);
