@@ -110,7 +110,6 @@ std::ostream& operator<<(std::ostream& out, const input<T>& x) {
 // (whose own range is astronomically large).
 template <class T>
 struct exponent_range {
-  static constexpr int digits_guess = std::numeric_limits<double>::digits;
   static int lowest() {
     if constexpr (std::is_floating_point_v<T> || std::is_same_v<T, float128>)
       return std::numeric_limits<T>::min_exponent - detail::precision_of<T>();

@@ -100,7 +100,6 @@ struct certified {
 
 namespace detail_ref {
 
-inline rational square(const rational& x) { return x * x; }
 inline rational floor_squared(const rational& x) { return x.sign() > 0 ? x * x : rational(); }
 
 // sign of R(s) = s + u + phi (floor(dy - s)^2 - floor(dy)^2) / s, exactly, for s != 0
@@ -211,8 +210,7 @@ real residual_at(const real& s, const T& u, const T& dy, const T& phi, mpfr_prec
 // R'(s) on the side of the kink where s lies (R is C1 at the kink, so either
 // side's formula serves at s = dy): 1 + phi, 1 + phi dy^2/s^2, 1, 1 + phi (1 - dy^2/s^2).
 template <class T>
-real slope_at(const real& s, const T& u, const T& dy_in, const T& phi_in, mpfr_prec_t bits = 256) {
-  (void)u;
+real slope_at(const real& s, const T& dy_in, const T& phi_in, mpfr_prec_t bits = 256) {
   const mpfr_prec_t exact_bits = std::max<mpfr_prec_t>(bits, 4 * contact::detail::precision_of<T>());
   const real dy = exactly(dy_in, exact_bits), phi = exactly(phi_in, exact_bits);
   real result(exact_bits), ratio(2 * exact_bits);  // 1 - dy^2/s^2 cancels: keep every bit of s
