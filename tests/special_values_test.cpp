@@ -100,6 +100,7 @@ TEST(StableHardCases, ListedInputsStayWithinBound) {
       {0x1p-1074, 0x1p-1074, 0x1p+1023},                                          // subnormal u and dy
       {-0x1p-1074, 0x1p-1074, 1.0},                                               // boundary on subnormals
       {0x1.fffffffffffffp+1023, -0x1.fffffffffffffp+1023, 0x1.fffffffffffffp+1023},
+      {0x1.fffffffffffffp+1023, -0x1.fffffffff7fffp+1023, 0x1.4ffffffffffffp-15},  // impact, root -DBL_MAX (was -inf)
   };
   for (const auto& x : hard) {
     const auto exact = reference::solve(x[0], x[1], x[2]);

@@ -145,9 +145,10 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, int& which_out) 
   denominator = pick(is_free, T(1), denominator);
   T s = numerator / denominator;
 
-  // The clamps of solve_stable; next_down(dy) for dy <= 0 and next_up(dy) for dy > 0.
+  // The clamps of solve_stable: -u and next_down(dy) for impact, dy for contact, next_up(dy) for release.
   const U dy_bits = std::bit_cast<U>(dy);
   const T unclamped = s;
+  s = pick(is_impact & mask<T>(unclamped < -u), T(-u), s);  // below -u means below dy too
   s = pick(is_impact & mask<T>(!(unclamped < dy)), std::bit_cast<T>(U((dy_bits | sign_bit) + 1)), s);
   s = pick(is_contact & mask<T>(unclamped > dy), dy, s);
   s = pick(is_release & mask<T>(!(unclamped > dy)), std::bit_cast<T>(U(dy_bits + 1)), s);

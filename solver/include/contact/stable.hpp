@@ -134,6 +134,9 @@ solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
   if (dy <= 0) {
     if (u <= -dy) return {-u, contact_case::free};  // (A.29), exact
     T s = detail::evaluate<T>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi, plain);
+    // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
+    // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
+    if (s < -u) s = -u;
     if (!(s < dy)) s = detail::next_down(dy);
     return {s, contact_case::impact};
   }
