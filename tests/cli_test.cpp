@@ -67,14 +67,26 @@ TEST(ContactSolve, ReportsEachBadLineInPlaceAndOnStderrWithItsNumber) {
 }
 
 TEST(ContactSolve, ExplainsEachMalformedNumber) {
-  const auto r = run_cli("", "0x1.8.8 1 1\n0x 1 1\n0x1q3 1 1\n0x1p 1 1\n0x1pz 1 1\n1.5x 1 1\n1 inf 1\n1 1 nan\n+0x1p-2 -0x1P-1 3\n");
+  const auto r = run_cli(
+      "", "0x1.8.8 1 1\n0x 1 1\n0x1q3 1 1\n0x1p 1 1\n0x1pz 1 1\n0x1p3x 1 1\n1.5x 1 1\n1 inf 1\n1 1 nan\n+0x1p-2 -0x1P-1 3\n");
   const auto out = lines_of(r.out);
-  ASSERT_EQ(out.size(), 9u);
-  for (int i = 0; i < 6; ++i) EXPECT_EQ(out[i].substr(0, 7), "error '") << out[i];
-  EXPECT_EQ(out[6], "error dy is not finite");
-  EXPECT_EQ(out[7], "error phi is not finite");
-  EXPECT_EQ(out[8], "-0x1p-2 1");  // u = 1/4, dy = -1/2: (A.29), s = -u
-  EXPECT_EQ(lines_of(r.err).size(), 8u);
+  ASSERT_EQ(out.size(), 10u);
+  for (int i = 0; i < 7; ++i) EXPECT_EQ(out[i].substr(0, 7), "error '") << out[i];
+  EXPECT_EQ(out[7], "error dy is not finite");
+  EXPECT_EQ(out[8], "error phi is not finite");
+  EXPECT_EQ(out[9], "-0x1p-2 1");  // u = 1/4, dy = -1/2: (A.29), s = -u
+  EXPECT_EQ(lines_of(r.err).size(), 9u);
+}
+
+TEST(ContactSolve, AcceptsAnUpperCaseHexPrefix) {
+  EXPECT_EQ(run_cli("", "0X1P0 -0X1p0 3\n").out, "-0x1p+0 1\n");
+}
+
+// strtod's answer: the nearest double, here 0 (C99 says ERANGE; it is no overflow).
+TEST(ContactSolve, ReadsADecimalBelowTheSubnormalRangeAsZero) {
+  const auto out = lines_of(run_cli("", "1e-400 1 3\n0 1 3\n").out);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0], out[1]);
 }
 
 TEST(ContactSolve, RejectsMalformedNumbersInWiderTypes) {

@@ -62,7 +62,7 @@ TYPED_TEST(StableProperty, ResidualAtComputedStepWithinRoundingBound) {
     reference::real residual = reference::residual_at(s, x.u, x.dy, x.phi);
     reference::real slope = reference::slope_at(s, x.dy, x.phi);
     for (const auto& other : {reference::slope_at(exact.s, x.dy, x.phi), reference::slope_at(as_real(x.dy), x.dy, x.phi)})
-      if (mpfr_cmp(other.get(), slope.get()) > 0) slope = other;
+      if (mpfr_cmp(other.get(), slope.get()) > 0) mpfr_set(slope.get(), other.get(), MPFR_RNDN);  // both exact_bits wide
     // |R(s)| / R'max in ulps of T at the root: at most the forward error bound
     mpfr_div(residual.get(), residual.get(), slope.get(), MPFR_RNDU);
     const double residual_ulps = in_ulps<T>(residual, exact.s);

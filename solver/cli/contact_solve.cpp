@@ -102,12 +102,12 @@ std::string format(const T& s) {
   }
 }
 
-std::string why_invalid(bool u_finite, bool dy_finite, bool phi_finite, bool phi_negative) {
+std::string why_invalid(bool u_finite, bool dy_finite, bool phi_finite) {
   if (!u_finite) return "u is not finite";
   if (!dy_finite) return "dy is not finite";
   if (!phi_finite) return "phi is not finite";
-  if (phi_negative) return "phi is negative";
-  return "invalid input";
+  // the library rejects nothing else: phi < 0 is the one finite invalid input
+  return "phi is negative";
 }
 
 template <class T>
@@ -136,7 +136,7 @@ int run(std::istream& in, contact::algorithm method) {
       const T &u = *values[0], &dy = *values[1], &phi = *values[2];
       const auto result = contact::solve(u, dy, phi, method);
       if (result.which == contact::contact_case::invalid)
-        reason = why_invalid(isfinite(u), isfinite(dy), isfinite(phi), phi < 0);
+        reason = why_invalid(isfinite(u), isfinite(dy), isfinite(phi));
       else
         std::cout << format(result.s) << ' ' << static_cast<int>(result.which) << '\n';
     }

@@ -72,18 +72,20 @@ solution<T> solve_newton(const T& u, const T& dy, const T& phi, int max_iteratio
     (r < 0 ? lower : upper) = s;
     T next = s - r / slope;
     if (!(next >= lower && next <= upper)) next = bracket_midpoint(lower, upper);
+    // (a collapsed bracket converges too: its only point is s itself)
     const bool converged = fabs(next - s) <= half_epsilon * fabs(s);
     s = next;
-    if (converged || lower == upper) break;
+    if (converged) break;
   }
-  // a root beyond T's range: the residual has not changed sign at the largest finite value
-  const T infinity = std::numeric_limits<T>::infinity();
-  if (upper == largest && newton_form::residual_of(largest, u, dy, phi).residual < 0) s = infinity;
-  if (lower == -largest && newton_form::residual_of(-largest, u, dy, phi).residual > 0) s = -infinity;
+  // A root above T's range: the residual has not changed sign at the largest
+  // finite value. None lies below it: below the kink the root is at least -u
+  // (R(-u) <= 0), and the bracket's lower end, -largest, is never above -u.
+  if (upper == largest && newton_form::residual_of(largest, u, dy, phi).residual < 0)
+    s = std::numeric_limits<T>::infinity();
+  // Every iterate stays in the bracket, which holds the kink on the root's
+  // side: only the strict sides of (A.30) and (A.32) can need a step off dy.
   if (which == contact_case::impact && !(s < dy)) s = detail::next_down(dy);
   if (which == contact_case::release && !(s > dy)) s = detail::next_up(dy);
-  if (which == contact_case::contact && s > dy) s = dy;
-  if (which == contact_case::free && s < dy) s = dy;
   return {s, which};
 }
 

@@ -22,19 +22,21 @@
 
 namespace contact::reference {
 
-// RAII for mpfr_t at a fixed precision.
+// RAII for mpfr_t at a fixed precision. Movable (a certified answer goes into
+// containers), not copyable: every copy the reference needs is an explicit mpfr_set.
 class real {
  public:
   explicit real(mpfr_prec_t bits) { mpfr_init2(value_, bits); mpfr_set_zero(value_, 1); }
-  real(const real& other) { mpfr_init2(value_, mpfr_get_prec(other.value_)); mpfr_set(value_, other.value_, MPFR_RNDN); }
-  real& operator=(const real& other) {
-    if (this != &other) { mpfr_set_prec(value_, mpfr_get_prec(other.value_)); mpfr_set(value_, other.value_, MPFR_RNDN); }
-    return *this;
+  real(real&& other) noexcept {
+    mpfr_init2(value_, mpfr_get_prec(other.value_));
+    mpfr_swap(value_, other.value_);
   }
+  real(const real&) = delete;
+  real& operator=(const real&) = delete;
+  real& operator=(real&&) = delete;
   ~real() { mpfr_clear(value_); }
   mpfr_ptr get() { return value_; }
   mpfr_srcptr get() const { return value_; }
-  double to_double() const { return mpfr_get_d(value_, MPFR_RNDN); }
   std::string to_string(int digits = 40) const {
     char* text = nullptr;
     mpfr_asprintf(&text, "%.*Rg", digits, value_);
@@ -47,22 +49,27 @@ class real {
   mpfr_t value_;
 };
 
-// RAII for mpq_t: exact rationals, for signs that must not be rounded.
+// RAII for mpq_t: exact rationals, for signs that must not be rounded. Results
+// are built in place (no copies exist to go wrong).
 class rational {
  public:
   rational() { mpq_init(value_); }
   explicit rational(const real& x) { mpq_init(value_); mpfr_get_q(value_, x.get()); }
-  rational(const rational& other) { mpq_init(value_); mpq_set(value_, other.value_); }
-  rational& operator=(const rational& other) { mpq_set(value_, other.value_); return *this; }
+  rational(const rational&) = delete;
+  rational& operator=(const rational&) = delete;
   ~rational() { mpq_clear(value_); }
   mpq_ptr get() { return value_; }
   mpq_srcptr get() const { return value_; }
   int sign() const { return mpq_sgn(value_); }
-  friend rational operator+(const rational& a, const rational& b) { rational r; mpq_add(r.value_, a.value_, b.value_); return r; }
-  friend rational operator-(const rational& a, const rational& b) { rational r; mpq_sub(r.value_, a.value_, b.value_); return r; }
-  friend rational operator*(const rational& a, const rational& b) { rational r; mpq_mul(r.value_, a.value_, b.value_); return r; }
+  friend rational operator+(const rational& a, const rational& b) { return {mpq_add, a, b}; }
+  friend rational operator-(const rational& a, const rational& b) { return {mpq_sub, a, b}; }
+  friend rational operator*(const rational& a, const rational& b) { return {mpq_mul, a, b}; }
 
  private:
+  rational(void (*operation)(mpq_ptr, mpq_srcptr, mpq_srcptr), const rational& a, const rational& b) {
+    mpq_init(value_);
+    operation(value_, a.value_, b.value_);
+  }
   mpq_t value_;
 };
 
@@ -110,6 +117,28 @@ inline int residual_sign(const rational& s, const rational& u, const rational& d
 }
 
 }  // namespace detail_ref
+
+// The certificate of a root s of (A.2): sets [lower, upper] to s -+ a relative
+// 2^-(bits - 8) of s and returns whether the exact residual changes sign
+// across it, R(lower) <= 0 <= R(upper); R being increasing, the exact root then
+// lies in [lower, upper]. At s = 0 the interval is the point 0, and the test is
+// that the limit of R there, u - 2 phi floor(dy), vanishes.
+inline bool certify(const real& s, real& lower, real& upper, const rational& u, const rational& dy,
+                    const rational& phi, mpfr_prec_t bits) {
+  if (mpfr_zero_p(s.get())) {
+    mpfr_set_zero(lower.get(), 1);
+    mpfr_set_zero(upper.get(), 1);
+    const rational limit = u - (dy.sign() > 0 ? phi * dy + phi * dy : rational());
+    return limit.sign() == 0;
+  }
+  real delta(mpfr_get_prec(s.get()));
+  mpfr_abs(delta.get(), s.get(), MPFR_RNDN);
+  mpfr_div_2ui(delta.get(), delta.get(), static_cast<unsigned long>(bits - 8), MPFR_RNDN);
+  mpfr_sub(lower.get(), s.get(), delta.get(), MPFR_RNDD);
+  mpfr_add(upper.get(), s.get(), delta.get(), MPFR_RNDU);
+  return detail_ref::residual_sign(rational(lower), u, dy, phi) <= 0 &&
+         detail_ref::residual_sign(rational(upper), u, dy, phi) >= 0;
+}
 
 // Solves (A.2) for finite u, dy and phi >= 0 given in type T.
 template <class T>
@@ -176,21 +205,7 @@ certified solve(const T& u_in, const T& dy_in, const T& phi_in, mpfr_prec_t bits
 
   certified result{real(work), real(work), real(work), which, false};
   mpfr_set(result.s.get(), s.get(), r);
-  if (mpfr_zero_p(s.get())) {
-    // s = 0 comes out of round-to-nearest only when it is exact; the limit of R
-    // at 0 is then u - 2 phi floor(dy), which must vanish
-    const rational limit = uq - (dyq.sign() > 0 ? phiq * dyq + phiq * dyq : rational());
-    result.is_certified = limit.sign() == 0;
-    return result;
-  }
-  real delta(work);  // a relative 2^-(bits - 8) of s
-  mpfr_abs(delta.get(), s.get(), r);
-  mpfr_div_2ui(delta.get(), delta.get(), bits - 8, r);
-  mpfr_sub(result.lower.get(), s.get(), delta.get(), MPFR_RNDD);
-  mpfr_add(result.upper.get(), s.get(), delta.get(), MPFR_RNDU);
-  const int at_lower = detail_ref::residual_sign(rational(result.lower), uq, dyq, phiq);
-  const int at_upper = detail_ref::residual_sign(rational(result.upper), uq, dyq, phiq);
-  result.is_certified = at_lower <= 0 && at_upper >= 0;
+  result.is_certified = certify(result.s, result.lower, result.upper, uq, dyq, phiq, bits);
   return result;
 }
 
@@ -263,8 +278,8 @@ double ulp_error(const T& computed, const certified& exact) {
     real half_ulp = ulp_of<T>(largest);
     mpfr_div_2ui(half_ulp.get(), half_ulp.get(), 1, MPFR_RNDN);
     mpfr_add(largest.get(), largest.get(), half_ulp.get(), MPFR_RNDN);  // the rounding threshold to infinity
-    const bool beyond = computed > 0 ? mpfr_cmp(exact.s.get(), largest.get()) >= 0
-                                     : mpfr_cmpabs(exact.s.get(), largest.get()) >= 0 && mpfr_sgn(exact.s.get()) < 0;
+    if (computed < 0) mpfr_neg(largest.get(), largest.get(), MPFR_RNDN);
+    const bool beyond = computed > 0 ? mpfr_cmp(exact.s.get(), largest.get()) >= 0 : mpfr_cmp(exact.s.get(), largest.get()) <= 0;
     return beyond ? 0.0 : std::numeric_limits<double>::infinity();
   }
   real difference = exactly(computed, mpfr_get_prec(exact.s.get()) + 64);
