@@ -100,35 +100,36 @@ static_assert(vector_window<double> <= 240 && vector_window<float> <= 24, "insid
 // lies outside the vector window, or (A.21)'s exact sum is so close to 0 that
 // the filter below cannot tell its sign.
 template <class T>
-CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, int& which_out) {
+CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
   using U = bits_t<T>;
-  constexpr U sign_bit = U(1) << (sizeof(T) * 8 - 1);
   const U inside = inside_window(u, dy, phi);
   const U no_contact_before = mask<T>(dy <= 0);
-  const T gap = -dy;
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
   // discriminant u^2 + 4 (phi gap) (u - gap), (A.32) release has
-  // stable_form::release's u^2 + 4 ((phi dy) dy); the same operations on the
-  // lane's own operands.
-  const T x = phi * pick(no_contact_before, gap, dy);  // impact: push = phi gap; release: phi dy
-  const T z = x * pick(no_contact_before, T(u - gap), dy);  // impact: push (u - gap); release: phi dy^2
+  // stable_form::release's u^2 + 4 ((phi dy) dy); the same roundings on the
+  // lane's own operands. gap = -dy = |dy| on the lanes of (A.30), so phi gap
+  // and phi dy are both phi |dy|, and u - gap is the same sum as u + dy.
+  const T a = u + dy;
+  const T x = phi * std::fabs(dy);                       // impact: push = phi gap; release: phi dy
+  const T z = x * pick(no_contact_before, a, dy);        // impact: push (u - gap); release: phi dy^2
   const T root = std::sqrt(std::fma(u, u, T(4) * z));
 
   // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
   // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
-  // 2^-p (|a| + |b| + |phi dy|) (p = precision; no underflow inside the window),
-  // so |b| > 2^(3-p) (|a| + |phi dy|) gives its sign. The rare lanes it cannot
+  // 2^-p (|a| + |b| + phi dy) (p = precision; no underflow inside the window),
+  // so |b| > 2^(3-p) (|a| + phi dy) gives its sign. The rare lanes it cannot
   // decide go to the scalar path, whose exact expansion decides them.
-  const T a = u + dy;
-  const T b = a - x;  // on dy > 0 lanes, x = phi dy
+  const T b = a - x;  // on dy > 0 lanes, x = phi dy >= 0
   constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
-  const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + std::fabs(x)) * filter);
+  const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + x) * filter);
 
-  // The case masks, each from its own comparison (no ~ on masks: fewer instructions).
+  // The case masks, each from its own comparison (no ~ on masks: fewer
+  // instructions). u <= gap is a <= 0: u + dy rounds to a number of its sign
+  // (inside the window no sum is small enough to round to 0).
   const U contact_before = mask<T>(dy > 0);
-  const U is_free = no_contact_before & mask<T>(u <= gap);
-  const U is_impact = no_contact_before & mask<T>(!(u <= gap));
+  const U is_free = no_contact_before & mask<T>(a <= 0);
+  const U is_impact = no_contact_before & mask<T>(!(a <= 0));
   const U is_contact = contact_before & mask<T>(b > 0);
   const U is_release = contact_before & mask<T>(!(b > 0));
 
@@ -141,37 +142,46 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, int& which_out) 
   denominator = pick(is_contact, one_plus_phi, denominator);
   numerator = pick(is_impact, T(-((u + T(2) * x) + root)), numerator);
   denominator = pick(is_impact, T(T(2) * one_plus_phi), denominator);
-  numerator = pick(is_free, T(-u), numerator);
-  denominator = pick(is_free, T(1), denominator);
   T s = numerator / denominator;
 
-  // The clamps of solve_stable: -u and next_down(dy) for impact, dy for contact, next_up(dy) for release.
-  const U dy_bits = std::bit_cast<U>(dy);
-  const T unclamped = s;
-  s = pick(is_impact & mask<T>(unclamped < -u), T(-u), s);  // below -u means below dy too
-  s = pick(is_impact & mask<T>(!(unclamped < dy)), std::bit_cast<T>(U((dy_bits | sign_bit) + 1)), s);
-  s = pick(is_contact & mask<T>(unclamped > dy), dy, s);
-  s = pick(is_release & mask<T>(!(unclamped > dy)), std::bit_cast<T>(U(dy_bits + 1)), s);
+  // The clamps of solve_stable, as one interval per case: [-u, next_down(dy)]
+  // for impact (-u < dy there, so the order of solve_stable's two tests does
+  // not matter), (-inf, dy] for contact, [next_up(dy), inf) for release. dy is
+  // normal and not 0, so both neighbours are one step of its bits away from 0.
+  constexpr T infinity = std::numeric_limits<T>::infinity();
+  const T away_from_zero = std::bit_cast<T>(U(std::bit_cast<U>(dy) + 1));
+  const T lower = pick(is_impact, T(-u), pick(is_release, away_from_zero, T(-infinity)));
+  const T upper = pick(is_impact, away_from_zero, pick(is_contact, dy, infinity));
+  s = s < lower ? lower : s;
+  s = s > upper ? upper : s;
+  s = pick(is_free, T(-u), s);  // (A.29): -u, as -u / 1 rounds, with no clamp
 
   s_out = s;
   // the case number 1 + [impact] + 2 [dy > 0] + [release]; a true mask is -1
   using S = std::make_signed_t<U>;
-  which_out = static_cast<int>(S(1) - S(is_impact) - S(2) * S(contact_before) - S(is_release));
+  which_out = S(1) - S(is_impact) - S(2) * S(contact_before) - S(is_release);
   return inside & (no_contact_before | decided);
 }
 
 template <class T>
 void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restrict phi, T* __restrict s,
                  int* __restrict which, std::ptrdiff_t n) {
+  // The case numbers first go to a block-sized buffer of T's width, so that
+  // the solving loop works on one vector width only (mixing int with double
+  // would make the compiler solve two vectors at once and run out of registers).
+  using case_number = std::make_signed_t<bits_t<T>>;
+  case_number cases[block];
   for (std::ptrdiff_t start = 0; start < n; start += block) {
-    const std::ptrdiff_t end = start + block < n ? start + block : n;
+    const std::ptrdiff_t count = start + block < n ? block : n - start;
     bits_t<T> all_solved = ~bits_t<T>(0);
-    for (std::ptrdiff_t i = start; i < end; ++i) all_solved &= lane(u[i], dy[i], phi[i], s[i], which[i]);
+    for (std::ptrdiff_t i = 0; i < count; ++i)
+      all_solved &= lane(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
+    for (std::ptrdiff_t i = 0; i < count; ++i) which[start + i] = static_cast<int>(cases[i]);
     if (all_solved != ~bits_t<T>(0)) {
-      for (std::ptrdiff_t i = start; i < end; ++i) {
+      for (std::ptrdiff_t i = start; i < start + count; ++i) {
         T unused_s;
-        int unused_which;
-        if (!lane(u[i], dy[i], phi[i], unused_s, unused_which)) {
+        case_number unused_case;
+        if (!lane(u[i], dy[i], phi[i], unused_s, unused_case)) {
           const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
           s[i] = r.s;
           which[i] = static_cast<int>(r.which);

@@ -218,8 +218,9 @@ energy_result simulate(const oscillator& o, method m) {
       mpfr_mul(term.get(), term.get(), kb_x.get(), MPFR_RNDN);
       mpfr_add(total.get(), total.get(), term.get(), MPFR_RNDN);
     }
-    mpfr_div_2ui(total.get(), total.get(), 1, MPFR_RNDN);
-    return total;
+    real energy(bits);
+    mpfr_div_2ui(energy.get(), total.get(), 1, MPFR_RNDN);
+    return energy;
   };
   auto energy_in_type = [&](const T& y_now, const T& p_now) {
     const T g = height - y_now;
