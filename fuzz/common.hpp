@@ -93,36 +93,39 @@ bool is_valid(const triple<T>& x) {
 
 // ---- printing --------------------------------------------------------------
 
+// x printed with the printf format for its type: one for float and double,
+// one for long double, one for float128 (quadmath).
+struct printf_formats {
+  const char *for_double, *for_long_double, *for_float128;
+};
+
 template <class T>
-std::string hex(const T& x) {
+std::string printed(const T& x, const printf_formats& formats) {
   char text[128];
   if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
-    std::snprintf(text, sizeof text, "%a", double(x));
+    std::snprintf(text, sizeof text, formats.for_double, double(x));
   } else if constexpr (std::is_same_v<T, long double>) {
-    std::snprintf(text, sizeof text, "%La", x);
+    std::snprintf(text, sizeof text, formats.for_long_double, x);
   }
 #ifndef CONTACT_FUZZ_NO_FLOAT128
   else if constexpr (std::is_same_v<T, contact::float128>) {
-    quadmath_snprintf(text, sizeof text, "%Qa", x.backend().value());
+    quadmath_snprintf(text, sizeof text, formats.for_float128, x.backend().value());
   }
 #endif
+  else {
+    static_assert(std::is_same_v<T, double>, "no printf format for this type");
+  }
   return text;
 }
 
 template <class T>
+std::string hex(const T& x) {
+  return printed(x, {"%a", "%La", "%Qa"});
+}
+
+template <class T>
 std::string decimal(const T& x) {
-  char text[128];
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
-    std::snprintf(text, sizeof text, "%.17g", double(x));
-  } else if constexpr (std::is_same_v<T, long double>) {
-    std::snprintf(text, sizeof text, "%.21Lg", x);
-  }
-#ifndef CONTACT_FUZZ_NO_FLOAT128
-  else if constexpr (std::is_same_v<T, contact::float128>) {
-    quadmath_snprintf(text, sizeof text, "%.36Qg", x.backend().value());
-  }
-#endif
-  return text;
+  return printed(x, {"%.17g", "%.21Lg", "%.36Qg"});
 }
 
 template <class T>

@@ -87,21 +87,6 @@ std::optional<T> parse_number(const std::string& token, std::string& reason) {
   }
 }
 
-template <class T>
-std::string format(const T& s) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%a", static_cast<double>(s));
-    return text;
-  } else {
-    std::ostringstream out;
-    // enough decimal digits to round-trip T's significand (run-time precision for mpfr)
-    const int round_trip_digits = static_cast<int>(std::ceil(contact::detail::precision_of<T>() * 0.30102999566398120)) + 1;
-    out << std::setprecision(round_trip_digits) << s;
-    return out.str();
-  }
-}
-
 std::string why_invalid(bool u_finite, bool dy_finite, bool phi_finite) {
   if (!u_finite) return "u is not finite";
   if (!dy_finite) return "dy is not finite";
@@ -138,7 +123,7 @@ int run(std::istream& in, contact::algorithm method) {
       if (result.which == contact::contact_case::invalid)
         reason = why_invalid(isfinite(u), isfinite(dy), isfinite(phi));
       else
-        std::cout << format(result.s) << ' ' << static_cast<int>(result.which) << '\n';
+        std::cout << contact::round_trip_text(result.s) << ' ' << static_cast<int>(result.which) << '\n';
     }
     if (!reason.empty()) {
       ++bad_lines;

@@ -5,7 +5,15 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/float128.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <string_view>
+#include <type_traits>
+
+#include "detail/float_tools.hpp"
 
 namespace contact {
 
@@ -38,6 +46,23 @@ bool with_type(std::string_view name, F&& f) {
   if (name == "cpp_bin_float_100") return f(bin_float_100{}), true;
   if (name == "mpfr") return f(mpfr_float{}), true;
   return false;
+}
+
+// x as text that reads back as the same T: C99 hex for float and double,
+// else enough decimal digits for T's significand (for mpfr, its run-time
+// precision).
+template <class T>
+std::string round_trip_text(const T& x) {
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%a", static_cast<double>(x));
+    return text;
+  } else {
+    std::ostringstream out;
+    const int round_trip_digits = static_cast<int>(std::ceil(detail::precision_of<T>() * 0.30102999566398120)) + 1;
+    out << std::setprecision(round_trip_digits) << x;
+    return out.str();
+  }
 }
 
 inline constexpr std::string_view type_names[] = {"float", "double", "long_double", "float128",

@@ -96,6 +96,13 @@ class reader {
     return value;
   }
 
+  // min_time of a [[run]] or of [throughput]: Google Benchmark's time per repetition
+  double seconds_per_repetition(const toml::node& node) const {
+    const double value = positive(node, "min_time");
+    if (value > 10) fail(node, "'min_time' is in seconds per repetition and must be at most 10");
+    return value;
+  }
+
   std::vector<std::string> strings(const toml::node& node, const std::string& key) const {
     const toml::array* array = node.as_array();
     if (!array) fail(node, "'" + key + "' must be an array of strings");
@@ -242,10 +249,7 @@ class reader {
     if (const toml::node* n = table.get("samples")) r.samples = integer(*n, "samples", 1, 10'000'000);
     if (const toml::node* n = table.get("timing_inputs")) r.timing_inputs = integer(*n, "timing_inputs", 1, 1 << 24);
     if (const toml::node* n = table.get("repetitions")) r.repetitions = static_cast<int>(integer(*n, "repetitions", 1, 100));
-    if (const toml::node* n = table.get("min_time")) {
-      r.min_time = positive(*n, "min_time");
-      if (r.min_time > 10) fail(*n, "'min_time' is in seconds per repetition and must be at most 10");
-    }
+    if (const toml::node* n = table.get("min_time")) r.min_time = seconds_per_repetition(*n);
     return r;
   }
 
@@ -256,10 +260,7 @@ class reader {
     if (const toml::node* n = table.get("lanes")) t.lanes = integer(*n, "lanes", 1, 1 << 26);
     if (const toml::node* n = table.get("cache_lanes")) t.cache_lanes = integer(*n, "cache_lanes", 1, 1 << 26);
     if (const toml::node* n = table.get("repetitions")) t.repetitions = static_cast<int>(integer(*n, "repetitions", 1, 100));
-    if (const toml::node* n = table.get("min_time")) {
-      t.min_time = positive(*n, "min_time");
-      if (t.min_time > 10) fail(*n, "'min_time' is in seconds per repetition and must be at most 10");
-    }
+    if (const toml::node* n = table.get("min_time")) t.min_time = seconds_per_repetition(*n);
     return t;
   }
 

@@ -60,20 +60,6 @@ contact::solution<T> solve_one(method m, const T& u, const T& dy, const T& phi) 
 }
 
 template <class T>
-std::string text_of(const T& x) {
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%a", static_cast<double>(x));
-    return buffer;
-  } else {
-    std::ostringstream out;
-    out.precision(std::numeric_limits<T>::max_digits10 > 0 ? std::numeric_limits<T>::max_digits10 : 40);
-    out << x;
-    return out.str();
-  }
-}
-
-template <class T>
 double to_double(const T& x) {
   return static_cast<double>(x);
 }
@@ -134,7 +120,7 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
       a.errors = std::move(errors);
       a.which = std::move(which);
       a.inputs = inputs;
-      for (std::size_t i = 0; i < n; ++i) a.s_text.push_back(text_of(s[i]));
+      for (std::size_t i = 0; i < n; ++i) a.s_text.push_back(contact::round_trip_text(s[i]));
     }
     out.push_back(std::move(a));
     bar.finish();
