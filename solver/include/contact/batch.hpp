@@ -36,6 +36,10 @@
 
 #include "stable.hpp"
 
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
+
 #if defined(__GNUC__)
 #define CONTACT_BATCH_INLINE inline __attribute__((always_inline))
 #else
@@ -191,6 +195,113 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
   }
 }
 
+#if defined(__AVX512F__)
+// The same lanes with AVX-512 written out, for double: the operations of lane()
+// in the same order, with the masks in mask registers. Measured on Zen 5, in
+// cache, against the vectorised lane() at about 1.0 ns per lane:
+// - each selection, clamp and case test is one instruction (about 65 per 8
+//   lanes against about 95): about 0.85 ns;
+// - the square root of the next 8 lanes is issued before the division of
+//   these 8 (both run on one unit, and out-of-order execution alone does not
+//   overlap them across iterations): about 0.76 ns.
+// A vector of 8 lanes with a lane that must be redone goes to the scalar path
+// lane by lane at once, out of line.
+inline void solve_lanes_avx512(const double* __restrict u_in, const double* __restrict dy_in, const double* __restrict phi_in,
+                      double* __restrict s_out, int* __restrict which_out, std::ptrdiff_t n) {
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0),
+                four = _mm512_set1_pd(4.0), minus_two = _mm512_set1_pd(-2.0);
+  const __m512d sign_bit = _mm512_set1_pd(-0.0);
+  const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
+  // inside_window() on bit patterns: |x| in [2^-E, 2^E) iff bits(|x|) - bits(2^-E) < 2E 2^52, unsigned;
+  // phi's sign bit makes a negative phi fail.
+  constexpr int significand_bits = std::numeric_limits<double>::digits - 1;
+  const __m512i lowest = _mm512_set1_epi64(
+      std::int64_t(std::numeric_limits<double>::max_exponent - 1 - vector_window<double>) << significand_bits);
+  const __m512i width = _mm512_set1_epi64(std::int64_t(2 * vector_window<double>) << significand_bits);
+  const __m512i one_bit = _mm512_set1_epi64(1);
+  const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
+                case_release = _mm256_set1_epi32(int(contact_case::release)), one_case = _mm256_set1_epi32(1);
+  std::ptrdiff_t i = 0;
+  // 8 lanes up to their square root, which is issued one vector ahead
+  struct up_to_root {
+    __m512d u, dy, phi, abs_dy, a, x, z, root;
+    __mmask8 no_contact_before;
+  };
+  auto start = [&](std::ptrdiff_t j) {
+    up_to_root l;
+    l.u = _mm512_loadu_pd(u_in + j);
+    l.dy = _mm512_loadu_pd(dy_in + j);
+    l.phi = _mm512_loadu_pd(phi_in + j);
+    l.abs_dy = _mm512_andnot_pd(sign_bit, l.dy);
+    l.no_contact_before = _mm512_cmp_pd_mask(l.dy, zero, _CMP_LE_OQ);
+    l.a = _mm512_add_pd(l.u, l.dy);
+    l.x = _mm512_mul_pd(l.phi, l.abs_dy);
+    l.z = _mm512_mul_pd(l.x, _mm512_mask_blend_pd(l.no_contact_before, l.dy, l.a));  // as lane()'s z
+    l.root = _mm512_sqrt_pd(_mm512_fmadd_pd(l.u, l.u, _mm512_mul_pd(four, l.z)));
+    return l;
+  };
+  up_to_root next{};
+  if (n >= 8) next = start(0);
+  for (; i + 8 <= n; i += 8) {
+    const up_to_root l = next;
+    if (i + 16 <= n) next = start(i + 8);
+    const __m512d u = l.u, dy = l.dy, phi = l.phi, abs_dy = l.abs_dy, a = l.a, x = l.x, z = l.z, root = l.root;
+    const __mmask8 no_contact_before = l.no_contact_before;
+    const __m512d abs_u = _mm512_andnot_pd(sign_bit, u);
+    const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_castpd_si512(abs_u), lowest),
+                                                     _mm512_sub_epi64(_mm512_castpd_si512(abs_dy), lowest),
+                                                     _mm512_sub_epi64(_mm512_castpd_si512(phi), lowest), 0xFE);
+    const __mmask8 inside = _mm512_cmplt_epu64_mask(spread, width);
+    const __mmask8 contact_before = _mm512_cmp_pd_mask(dy, zero, _CMP_GT_OQ);
+    const __m512d b = _mm512_sub_pd(a, x);
+    const __m512d bound = _mm512_mul_pd(_mm512_add_pd(_mm512_andnot_pd(sign_bit, a), x), filter);
+    const __mmask8 decided = _mm512_cmp_pd_mask(_mm512_andnot_pd(sign_bit, b), bound, _CMP_GT_OQ);
+    // lane()'s !(a <= 0) and !(b > 0) are the unordered predicates NLE and NGT
+    const __mmask8 is_free = _mm512_mask_cmp_pd_mask(no_contact_before, a, zero, _CMP_LE_OQ);
+    const __mmask8 is_impact = _mm512_mask_cmp_pd_mask(no_contact_before, a, zero, _CMP_NLE_UQ);
+    const __mmask8 is_contact = _mm512_mask_cmp_pd_mask(contact_before, b, zero, _CMP_GT_OQ);
+    const __mmask8 is_release = _mm512_mask_cmp_pd_mask(contact_before, b, zero, _CMP_NGT_UQ);
+    const __mmask8 rationalised = _mm512_cmp_pd_mask(u, zero, _CMP_GT_OQ);
+    const __m512d one_plus_phi = _mm512_add_pd(one, phi);
+    __m512d numerator = _mm512_mask_blend_pd(rationalised, _mm512_sub_pd(root, u), _mm512_mul_pd(two, z));
+    __m512d denominator = _mm512_mask_blend_pd(rationalised, two, _mm512_add_pd(u, root));
+    numerator = _mm512_mask_blend_pd(is_contact, numerator, _mm512_fmsub_pd(phi, _mm512_mul_pd(two, dy), u));
+    denominator = _mm512_mask_blend_pd(is_contact, denominator, one_plus_phi);
+    // -N / (2 (1 + phi)) as N / (-2 (1 + phi)): the same rounding, one negation fewer
+    numerator = _mm512_mask_blend_pd(is_impact, numerator,
+                                     _mm512_add_pd(_mm512_add_pd(u, _mm512_mul_pd(two, x)), root));
+    denominator = _mm512_mask_blend_pd(is_impact, denominator, _mm512_mul_pd(minus_two, one_plus_phi));
+    __m512d s = _mm512_div_pd(numerator, denominator);
+    // lane()'s clamps: max and min give s < lower ? lower : s and s > upper ? upper : s (s is finite here)
+    const __m512d minus_u = _mm512_xor_pd(u, sign_bit);
+    const __m512d away_from_zero = _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(dy), one_bit));
+    s = _mm512_mask_max_pd(s, is_impact, s, minus_u);
+    s = _mm512_mask_min_pd(s, is_impact, s, away_from_zero);
+    s = _mm512_mask_min_pd(s, is_contact, s, dy);
+    s = _mm512_mask_max_pd(s, is_release, s, away_from_zero);
+    s = _mm512_mask_mov_pd(s, is_free, minus_u);
+    _mm512_storeu_pd(s_out + i, s);
+    const __m256i higher_case = _mm256_mask_blend_epi32(no_contact_before, case_release, case_impact);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i),
+                        _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case));
+    const __mmask8 solved = inside & (no_contact_before | decided);
+    if (solved != 0xFF) [[unlikely]] {  // out of line: the hot loop stays short
+      for (int k = 0; k < 8; ++k)
+        if (!((solved >> k) & 1)) {
+          const solution<double> r = solve_stable(u_in[i + k], dy_in[i + k], phi_in[i + k]);
+          s_out[i + k] = r.s;
+          which_out[i + k] = static_cast<int>(r.which);
+        }
+    }
+  }
+  for (; i < n; ++i) {  // the last n mod 8 lanes
+    const solution<double> r = solve_stable(u_in[i], dy_in[i], phi_in[i]);
+    s_out[i] = r.s;
+    which_out[i] = static_cast<int>(r.which);
+  }
+}
+#endif
+
 }  // namespace batch_detail
 
 // Solves (A.2) for the n lanes u[i], dy[i], phi[i]; writes s[i] and the case
@@ -200,6 +311,12 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
 template <class T>
 void solve_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
   if constexpr (batch_detail::has_lane_kernel<T>) {
+#if defined(__AVX512F__)
+    if constexpr (std::is_same_v<T, double>) {
+      batch_detail::solve_lanes_avx512(u, dy, phi, s, which, n);
+      return;
+    }
+#endif
     batch_detail::solve_lanes(u, dy, phi, s, which, n);
   } else {
     for (std::ptrdiff_t i = 0; i < n; ++i) {
