@@ -152,6 +152,10 @@ TEST(Batch, PortableKernelDoubleLanesEqualScalarStableBitForBit) {
   expect_same_as_scalar(inputs<double>(200000, 6), contact::batch_detail::solve_lanes<double>);
 }
 
+TEST(Batch, PortableKernelPhysicalLanesEqualScalarStableBitForBit) {
+  expect_same_as_scalar(inputs<double>(100000, 7, true), contact::batch_detail::solve_lanes<double>);
+}
+
 TEST(Batch, FloatLanesEqualScalarStableBitForBit) { expect_same_as_scalar(inputs<float>(200000, 2)); }
 
 TEST(Batch, TheTestInputsHoldEveryCaseAndMostlyVectorLanes) {
