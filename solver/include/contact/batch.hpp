@@ -80,23 +80,31 @@ CONTACT_BATCH_INLINE T pick(bits_t<T> m, T a, T b) {
 // with exponents in [-E, E), E = vector_window<T>, and phi > 0. That is inside
 // detail::safe_window<T> (whose half-width is at least E), so the scalar path
 // runs the same plain-T operations on these lanes; NaN, infinity, zero, phi < 0
-// and the extreme magnitudes all go to the scalar fix-up. The test looks at the
-// exponent fields only: d = biased exponent - (bias - E) lies in [0, 2E) for
-// every one of the three, which (2E being a power of two) is a single test of
-// their bitwise OR. phi's sign bit stays in its exponent field, so phi < 0 fails.
+// and the extreme magnitudes all go to the scalar fix-up. The test reads bit
+// patterns, which order non-negative numbers as their values: |x| lies in
+// [2^-E, 2^E) iff bits(|x|) - bits(2^-E) < 2E binades of significands,
+// unsigned, and as 2E is a power of two, all three hold iff their bitwise OR
+// does. phi's sign bit makes a negative phi fail.
 template <class T>
 inline constexpr int vector_window = std::is_same_v<T, double> ? 128 : 16;
 
 template <class T>
-CONTACT_BATCH_INLINE bits_t<T> inside_window(T u, T dy, T phi) {
+inline constexpr bits_t<T> window_lowest =  // bits(2^-E)
+    bits_t<T>(std::numeric_limits<T>::max_exponent - 1 - vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+
+template <class T>
+inline constexpr bits_t<T> window_width = bits_t<T>(2 * vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> inside_window(T abs_u, T abs_dy, T phi) {
   using U = bits_t<T>;
-  constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
-  constexpr U base = U(std::numeric_limits<T>::max_exponent - 1 - vector_window<T>);
-  const U du = U((std::bit_cast<U>(u) << 1) >> (significand_bits + 1)) - base;
-  const U ddy = U((std::bit_cast<U>(dy) << 1) >> (significand_bits + 1)) - base;
-  const U dphi = U(std::bit_cast<U>(phi) >> significand_bits) - base;
-  return mask<T>(((du | ddy | dphi) >> (std::countr_zero(unsigned(2 * vector_window<T>)))) == 0);
+  const U spread = U(std::bit_cast<U>(abs_u) - window_lowest<T>) | U(std::bit_cast<U>(abs_dy) - window_lowest<T>) |
+                   U(std::bit_cast<U>(phi) - window_lowest<T>);
+  return mask<T>(spread < window_width<T>);
 }
+static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
+                  std::has_single_bit(unsigned(2 * vector_window<float>)),
+              "one test of the OR");
 static_assert(vector_window<double> <= 240 && vector_window<float> <= 24, "inside safe_window's half-width");
 
 // One lane of the branch-free path. Returns all ones if s and which are
@@ -106,7 +114,7 @@ static_assert(vector_window<double> <= 240 && vector_window<float> <= 24, "insid
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
   using U = bits_t<T>;
-  const U inside = inside_window(u, dy, phi);
+  const U inside = inside_window(std::fabs(u), std::fabs(dy), phi);
   const U no_contact_before = mask<T>(dy <= 0);
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
@@ -167,6 +175,14 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, std::make_signed
   return inside & (no_contact_before | decided);
 }
 
+// The scalar path for lane i, where the vector path cannot answer.
+template <class T>
+void solve_scalar_lane(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t i) {
+  const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
+  s[i] = r.s;
+  which[i] = static_cast<int>(r.which);
+}
+
 template <class T>
 void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restrict phi, T* __restrict s,
                  int* __restrict which, std::ptrdiff_t n) {
@@ -185,11 +201,7 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
       for (std::ptrdiff_t i = start; i < start + count; ++i) {
         T unused_s;
         case_number unused_case;
-        if (!lane(u[i], dy[i], phi[i], unused_s, unused_case)) {
-          const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
-          s[i] = r.s;
-          which[i] = static_cast<int>(r.which);
-        }
+        if (!lane(u[i], dy[i], phi[i], unused_s, unused_case)) solve_scalar_lane(u, dy, phi, s, which, i);
       }
     }
   }
@@ -212,12 +224,8 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
                 four = _mm512_set1_pd(4.0), minus_two = _mm512_set1_pd(-2.0);
   const __m512d sign_bit = _mm512_set1_pd(-0.0);
   const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
-  // inside_window() on bit patterns: |x| in [2^-E, 2^E) iff bits(|x|) - bits(2^-E) < 2E 2^52, unsigned;
-  // phi's sign bit makes a negative phi fail.
-  constexpr int significand_bits = std::numeric_limits<double>::digits - 1;
-  const __m512i lowest = _mm512_set1_epi64(
-      std::int64_t(std::numeric_limits<double>::max_exponent - 1 - vector_window<double>) << significand_bits);
-  const __m512i width = _mm512_set1_epi64(std::int64_t(2 * vector_window<double>) << significand_bits);
+  const __m512i lowest = _mm512_set1_epi64(std::int64_t(window_lowest<double>));  // inside_window()'s test
+  const __m512i width = _mm512_set1_epi64(std::int64_t(window_width<double>));
   const __m512i one_bit = _mm512_set1_epi64(1);
   const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
                 case_release = _mm256_set1_epi32(int(contact_case::release)), one_case = _mm256_set1_epi32(1);
@@ -287,18 +295,10 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     const __mmask8 solved = inside & (no_contact_before | decided);
     if (solved != 0xFF) [[unlikely]] {  // out of line: the hot loop stays short
       for (int k = 0; k < 8; ++k)
-        if (!((solved >> k) & 1)) {
-          const solution<double> r = solve_stable(u_in[i + k], dy_in[i + k], phi_in[i + k]);
-          s_out[i + k] = r.s;
-          which_out[i + k] = static_cast<int>(r.which);
-        }
+        if (!((solved >> k) & 1)) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i + k);
     }
   }
-  for (; i < n; ++i) {  // the last n mod 8 lanes
-    const solution<double> r = solve_stable(u_in[i], dy_in[i], phi_in[i]);
-    s_out[i] = r.s;
-    which_out[i] = static_cast<int>(r.which);
-  }
+  for (; i < n; ++i) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i);  // the last n mod 8 lanes
 }
 #endif
 
@@ -319,11 +319,7 @@ void solve_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::p
 #endif
     batch_detail::solve_lanes(u, dy, phi, s, which, n);
   } else {
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
-      s[i] = r.s;
-      which[i] = static_cast<int>(r.which);
-    }
+    for (std::ptrdiff_t i = 0; i < n; ++i) batch_detail::solve_scalar_lane(u, dy, phi, s, which, i);
   }
 }
 
