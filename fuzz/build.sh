@@ -43,27 +43,27 @@ JOBS=${JOBS:-2}
 targets=${CONTACT_FUZZ_TARGETS:-"differential cancellation invariants high_precision"}
 mkdir -p "$OUT" "$WORK/obj"
 
-# --- quadmath.h: clang does not search GCC's private include directory, and
-# adding all of it breaks clang (GCC's intrinsics headers), so link just the
-# two headers into a directory of their own.
+# --- quadmath.h: contact/types.hpp (the scalar types' names, float128) needs
+# it. clang does not search GCC's private include directory, and adding all of
+# it breaks clang (GCC's intrinsics headers), so link just the two headers into
+# a directory of their own.
 defines=()
 quadmath_header=""
 for candidate in "$(gcc -print-file-name=include/quadmath.h 2>/dev/null || true)" /usr/lib/gcc/*/*/include/quadmath.h; do
   if [[ -f "$candidate" ]]; then quadmath_header=$candidate; break; fi
 done
-includes=(-I"$root/solver/include" -I"$here")
-quadmath_lib=()
-if [[ -n "$quadmath_header" ]]; then
-  mkdir -p "$WORK/quadmath-include"
-  ln -sf "$quadmath_header" "$WORK/quadmath-include/quadmath.h"
-  ln -sf "$(dirname "$quadmath_header")/quadmath_weak.h" "$WORK/quadmath-include/quadmath_weak.h"
-  includes+=(-isystem "$WORK/quadmath-include")
-  static_quadmath=$(gcc -print-file-name=libquadmath.a 2>/dev/null || true)
-  if [[ -f "$static_quadmath" ]]; then quadmath_lib=("$static_quadmath"); else quadmath_lib=(-lquadmath); fi
-else
-  echo "build.sh: quadmath.h not found: high_precision checks long double only" >&2
-  defines+=(-DCONTACT_FUZZ_NO_FLOAT128)
+if [[ -z "$quadmath_header" ]]; then
+  echo "build.sh: quadmath.h not found (GCC's libquadmath: Debian libgcc-12-dev, or the gcc package)" >&2
+  exit 1
 fi
+# the solver and the shared verification vocabulary (contact/harness/), then fuzz/
+includes=(-I"$root/solver/include" -I"$root/harness/include" -I"$here")
+mkdir -p "$WORK/quadmath-include"
+ln -sf "$quadmath_header" "$WORK/quadmath-include/quadmath.h"
+ln -sf "$(dirname "$quadmath_header")/quadmath_weak.h" "$WORK/quadmath-include/quadmath_weak.h"
+includes+=(-isystem "$WORK/quadmath-include")
+static_quadmath=$(gcc -print-file-name=libquadmath.a 2>/dev/null || true)
+if [[ -f "$static_quadmath" ]]; then quadmath_lib=("$static_quadmath"); else quadmath_lib=(-lquadmath); fi
 
 # --- MPFR and GMP, statically when possible (OSS-Fuzz's runner image has neither).
 static_or_dynamic() {  # library name
@@ -96,7 +96,8 @@ build_one() {
   local t=$1 exe="$OUT/contact_$1" obj="$WORK/obj/$1.o"
   local stamp_file="$WORK/obj/$1.stamp"
   if [[ -x "$exe" && -f "$stamp_file" && "$(cat "$stamp_file")" == "$stamp" ]] &&
-     [[ -z "$(find "$here"/*.hpp "$here/targets/$t.cpp" "$root/solver/include" -newer "$exe" -print -quit)" ]]; then
+     [[ -z "$(find "$here"/*.hpp "$here/targets/$t.cpp" "$root/solver/include" "$root/harness/include" \
+               -newer "$exe" -print -quit)" ]]; then
     echo "build.sh: contact_$t is up to date"
     return 0
   fi

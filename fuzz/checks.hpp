@@ -4,15 +4,15 @@
 //
 //   differential    (u, dy, phi) doubles from 24 raw bytes; every algorithm
 //                   against the certified reference; aborts when the stable
-//                   algorithm exceeds its proven bound, returns NaN, returns
-//                   infinity where the exact root is not beyond DBL_MAX, picks
-//                   a case other than the exact one, or violates
-//                   complementarity.
+//                   algorithm exceeds the claimed bound of its branch, returns
+//                   NaN, returns infinity where the exact root is not beyond
+//                   DBL_MAX, picks a case other than the exact one, or
+//                   violates complementarity.
 //   cancellation    the textbook algorithm's ulp error, on inputs folded into
-//                   the range where no overflow or underflow can occur,
-//                   returned as a feedback bucket (case x log2 of the error) so
-//                   that the fuzzer climbs towards the worst cancellation.
-//                   Never aborts.
+//                   the plain window (docs/equations.md, "The plain window"),
+//                   where no overflow or underflow can occur, returned as a
+//                   feedback bucket (case x log2 of the error) so that the
+//                   fuzzer climbs towards the worst cancellation. Never aborts.
 //   invariants      a sweep of nine nearby inputs, across the case boundaries
 //                   when asked: s is non-increasing and 1-Lipschitz in u,
 //                   non-decreasing and 2 phi-Lipschitz in dy, and the cases
@@ -20,14 +20,23 @@
 //   high_precision  the differential check for long double and float128.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <utility>
 
 #include "common.hpp"
+#include "contact/detail/float_tools.hpp"
+#include "contact/detail/window.hpp"
 
 namespace contact::fuzz {
 
 // ---- differential -------------------------------------------------------------
+
+// Where the stable algorithm sits in contact::algorithms.
+inline constexpr std::size_t stable_index =
+    std::size_t(std::ranges::find(algorithms, algorithm::stable) - std::ranges::begin(algorithms));
+static_assert(stable_index < std::size(algorithms), "contact::algorithms has no stable algorithm");
 
 template <class T>
 std::string reference_text(const reference::certified& exact) {
@@ -50,13 +59,6 @@ bool beyond_range(const reference::certified& exact, const T& dy, bool positive)
   return mpfr_cmpabs(exact.s.get(), bound.get()) > 0 && (mpfr_sgn(exact.s.get()) > 0) == positive;
 }
 
-template <class T>
-std::string type_prefix() {
-  if constexpr (std::is_same_v<T, double>) return "";
-  else if constexpr (std::is_same_v<T, long double>) return "long_double:";
-  else return "float128:";
-}
-
 // What a differential check saw: the stable algorithm's error and the exact
 // case (case invalid for an invalid input). The libFuzzer targets feed them
 // back as coverage, so that campaigns climb towards the largest stable error.
@@ -74,71 +76,136 @@ inline int stable_bucket(const differential_result& r) {
   return 1 + (static_cast<int>(r.which) - 1) * 65 + fine;
 }
 
-// The differential check of one input of type T.
+// One algorithm's answer to one input and its error in ulps of T.
 template <class T>
-differential_result differential_check(const char* target, const triple<T>& x) {
+struct algorithm_run {
+  algorithm method;
+  solution<T> result;
+  double ulps;
+};
+
+template <class T>
+using algorithm_runs = std::array<algorithm_run<T>, std::size(algorithms)>;
+
+// Every algorithm must answer an invalid input with NaN and case invalid.
+template <class T>
+void check_rejects_invalid(const char* target, const input<T>& x) {
+  using std::isnan;
+  for (const algorithm a : algorithms) {
+    const solution<T> r = solve(x.u, x.dy, x.phi, a);
+    if (!(isnan(r.s) && r.which == contact_case::invalid))
+      fail(target, std::string(name_of(a)) + " did not reject an invalid input",
+           describe_input(x) + "  got s = " + hex(r.s) + ", case " + case_label(r.which) +
+               "\n  expected NaN and case 0 invalid\n");
+  }
+}
+
+// The reference's root; a root it cannot certify is a finding of its own.
+template <class T>
+reference::certified certified_root(const char* target, const input<T>& x) {
+  reference::certified exact = reference::solve<T>(x.u, x.dy, x.phi);
+  if (!exact.is_certified)
+    fail(target, "the reference could not certify its root",
+         describe_input(x) + "  reference s = " + exact.s.to_string(40) + ", case " + case_label(exact.which) + "\n");
+  return exact;
+}
+
+// The ulp error of an answer; infinity for a root beyond the largest finite T
+// (even one that rounds to it) is right, error 0.
+template <class T>
+double error_of(const solution<T>& r, const reference::certified& exact, const T& dy) {
+  using std::isinf;
+  const double ulps = reference::ulp_error<T>(r.s, exact);
+  if (isinf(r.s) && ulps != 0 && beyond_range<T>(exact, dy, r.s > 0)) return 0;
+  return ulps;
+}
+
+template <class T>
+algorithm_runs<T> run_every_algorithm(const input<T>& x, const reference::certified& exact) {
+  algorithm_runs<T> runs;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const solution<T> r = solve(x.u, x.dy, x.phi, algorithms[i]);
+    runs[i] = {algorithms[i], r, error_of(r, exact, x.dy)};
+  }
+  return runs;
+}
+
+template <class T>
+void record_runs(const input<T>& x, const algorithm_runs<T>& runs) {
+  for (const algorithm_run<T>& run : runs) stats().record(run_label<T>(run.method), run.ulps, x, run.result.which);
+}
+
+// The claimed bound of the branch that the exact case and the sign of u select.
+template <class T>
+double branch_bound(const input<T>& x, contact_case which) {
+  return claimed().for_case(which, x.u > 0);
+}
+
+// What is wrong with stable's answer, or "": NaN, a spurious infinity, the
+// wrong case, more error than its branch's claimed bound, complementarity.
+template <class T>
+std::string stable_problem(const input<T>& x, const algorithm_run<T>& stable, const reference::certified& exact) {
   using std::isinf;
   using std::isnan;
+  const solution<T>& got = stable.result;
+  if (isnan(got.s)) return "stable returned NaN for a valid input";
+  if (isinf(got.s) && stable.ulps != 0)
+    return "stable returned infinity where the exact root is a finite " + std::string(type_name<T>);
+  if (got.which != exact.which) return "stable chose the wrong case";
+  if (!(stable.ulps <= branch_bound(x, exact.which))) return "stable exceeds the claimed bound of its branch";
+  if (!lies_on_its_side(got.which, got.s, x.dy))
+    return "stable violates complementarity (s on the wrong side of dy for its case)";
+  return "";
+}
+
+// contact::solve without an algorithm must be solve_stable, to the bit.
+template <class T>
+std::string default_problem(const input<T>& x, const solution<T>& stable) {
+  using std::isnan;
+  const solution<T> dispatched = solve(x.u, x.dy, x.phi);
+  const bool same_s = dispatched.s == stable.s || (isnan(dispatched.s) && isnan(stable.s));
+  if (!same_s || dispatched.which != stable.which) return "contact::solve's default differs from solve_stable";
+  return "";
+}
+
+template <class T>
+std::string differential_report(const input<T>& x, const algorithm_runs<T>& runs, const reference::certified& exact) {
+  const algorithm_run<T>& stable = runs[stable_index];
+  std::ostringstream details;
+  details << describe_input(x) << "  expected s = " << reference_text<T>(exact) << "\n"
+          << "  got      s = " << hex(stable.result.s) << "   (" << decimal(stable.result.s) << ")\n"
+          << "  error      = " << stable.ulps << " ulps (claimed bound " << branch_bound(x, exact.which)
+          << " ulps, branch " << harness::branch_of(exact.which, x.u > 0) << ")\n"
+          << "  case: expected " << case_label(exact.which) << ", got " << case_label(stable.result.which) << "\n";
+  for (const algorithm_run<T>& run : runs)
+    if (run.method != algorithm::stable)
+      details << "  (" << name_of(run.method) << ": s = " << hex(run.result.s) << ", " << run.ulps << " ulps, case "
+              << case_label(run.result.which) << ")\n";
+  return details.str();
+}
+
+// The differential check of one input of type T.
+template <class T>
+differential_result differential_check(const char* target, const input<T>& x) {
   statistics& st = stats();
   ++st.inputs;
   if (!is_valid(x)) {
     ++st.invalid_inputs;
-    for (const algorithm a : algorithms) {
-      const solution<T> r = solve(x.u, x.dy, x.phi, a);
-      if (!(isnan(r.s) && r.which == contact_case::invalid))
-        fail(target, std::string(name_of(a)) + " did not reject an invalid input",
-             describe_input(x) + "  got s = " + hex(r.s) + ", case " + case_label(r.which) +
-                 "\n  expected NaN and case 0 invalid\n");
-    }
+    check_rejects_invalid(target, x);
     return {};
   }
-  const reference::certified exact = reference::solve<T>(x.u, x.dy, x.phi);
-  if (!exact.is_certified)
-    fail(target, "the reference could not certify its root",
-         describe_input(x) + "  reference s = " + exact.s.to_string(40) + ", case " + case_label(exact.which) + "\n");
-
-  solution<T> results[3];
-  double errors[3];
-  for (int i = 0; i < 3; ++i) {
-    results[i] = solve(x.u, x.dy, x.phi, algorithms[i]);
-    errors[i] = reference::ulp_error<T>(results[i].s, exact);
-    // infinity for a root beyond the largest finite T (even one that rounds to it) is right
-    if (isinf(results[i].s) && errors[i] != 0 && beyond_range<T>(exact, x.dy, results[i].s > 0)) errors[i] = 0;
-    st.record(type_prefix<T>() + std::string(name_of(algorithms[i])), errors[i], x, results[i].which);
-  }
-  static_assert(algorithms[1] == algorithm::stable);
-  const solution<T>& got = results[1];
-  const double error = errors[1];
-  const double bound = stable_bound();
-
-  std::string problem;
-  if (isnan(got.s)) problem = "stable returned NaN for a valid input";
-  else if (isinf(got.s) && error != 0)
-    problem = "stable returned infinity where the exact root is a finite " + std::string(type_label<T>());
-  else if (got.which != exact.which) problem = "stable chose the wrong case";
-  else if (!(error <= bound)) problem = "stable exceeds its proven bound";
-  else if (!lies_on_its_side(got.which, got.s, x.dy)) problem = "stable violates complementarity (s on the wrong side of dy for its case)";
-  else {
-    const solution<T> dispatched = solve(x.u, x.dy, x.phi);
-    if (!(dispatched.s == got.s || (isnan(dispatched.s) && isnan(got.s))) || dispatched.which != got.which)
-      problem = "contact::solve's default differs from solve_stable";
-  }
-  if (problem.empty()) return {error, exact.which};
-
-  std::ostringstream details;
-  details << describe_input(x) << "  expected s = " << reference_text<T>(exact) << "\n"
-          << "  got      s = " << hex(got.s) << "   (" << decimal(got.s) << ")\n"
-          << "  error      = " << error << " ulps (proven bound " << bound << " ulps)\n"
-          << "  case: expected " << case_label(exact.which) << ", got " << case_label(got.which) << "\n";
-  for (int i = 0; i < 3; ++i)
-    if (i != 1)
-      details << "  (" << name_of(algorithms[i]) << ": s = " << hex(results[i].s) << ", " << errors[i] << " ulps, case "
-              << case_label(results[i].which) << ")\n";
-  fail(target, problem, details.str());
+  const reference::certified exact = certified_root(target, x);
+  const algorithm_runs<T> runs = run_every_algorithm(x, exact);
+  record_runs(x, runs);
+  const algorithm_run<T>& stable = runs[stable_index];
+  std::string problem = stable_problem(x, stable, exact);
+  if (problem.empty()) problem = default_problem(x, stable.result);
+  if (problem.empty()) return {stable.ulps, exact.which};
+  fail(target, problem, differential_report(x, runs, exact));
 }
 
 inline differential_result check_differential(const std::uint8_t* data, std::size_t size) {
-  const triple<double> x{take_double(data, size, 0), take_double(data, size, 8), take_double(data, size, 16)};
+  const input<double> x{take_double(data, size, 0), take_double(data, size, 8), take_double(data, size, 16)};
   return differential_check<double>("differential", x);
 }
 
@@ -151,34 +218,36 @@ struct high_precision_result {
 };
 
 inline high_precision_result check_high_precision(const std::uint8_t* data, std::size_t size) {
+  const input<long double> x{take_long_double(data, size, 0), take_long_double(data, size, 16),
+                             take_long_double(data, size, 32)};
+  const input<contact::float128> q{take_float128(data, size, 0), take_float128(data, size, 16),
+                                   take_float128(data, size, 32)};
   high_precision_result result;
-  const triple<long double> x{take_long_double(data, size, 0), take_long_double(data, size, 16),
-                              take_long_double(data, size, 32)};
   result.long_double = differential_check<long double>("high_precision", x);
-#ifndef CONTACT_FUZZ_NO_FLOAT128
-  const triple<contact::float128> q{take_float128(data, size, 0), take_float128(data, size, 16),
-                                    take_float128(data, size, 32)};
   result.quad = differential_check<contact::float128>("high_precision", q);
-#endif
   return result;
 }
 
 // ---- cancellation hunter ------------------------------------------------------
 
 // The hunter's inputs: 24 raw bytes as three doubles, folded into the stable
-// algorithm's plain window (|x| zero or within 2^-240 .. 2^240): a value whose
-// exponent lies outside has its exponent field wrapped into the window (sign
-// and significand kept), NaN and infinity included, and phi's sign is dropped.
-// Every input is then valid and every double of the window is reachable as
-// itself, and no intermediate of the textbook formulas can overflow or
-// underflow, so that every error the hunter sees is rounding and cancellation.
-// (Overflow and underflow of the textbook formulas are measured by the
-// differential target, whose inputs are not folded.)
+// algorithm's plain window (|x| zero or within 2^-E .. 2^E, E =
+// detail::plain_window<double>, docs/equations.md "The plain window"): a value
+// whose exponent lies outside has its exponent field wrapped into the window
+// (sign and significand kept), NaN and infinity included, and phi's sign is
+// dropped. Every input is then valid and every double of the window below 2^E
+// is reachable as itself, and no intermediate of the textbook formulas can
+// overflow or underflow, so that every error the hunter sees is rounding and
+// cancellation. (Overflow and underflow of the textbook formulas are measured
+// by the differential target, whose inputs are not folded.)
 inline double fold_into_window(double x) {
   std::uint64_t bits;
   std::memcpy(&bits, &x, 8);
   if ((bits << 1) == 0) return x;  // +-0
-  constexpr std::uint64_t lowest = 1023 - 240, width = 480;  // biased exponents 783 .. 1262
+  constexpr std::uint64_t half_width = detail::plain_window<double>;
+  constexpr std::uint64_t bias = std::numeric_limits<double>::max_exponent - 1;
+  constexpr std::uint64_t lowest = bias - half_width, width = 2 * half_width;  // biased exponents of 2^-E .. 2^(E-1)
+  static_assert(0 < lowest && lowest + width <= 2 * bias, "the plain window lies within double's normal range");
   const std::uint64_t exponent = (bits >> 52) & 0x7ff;
   if (exponent < lowest || exponent >= lowest + width) {
     const std::uint64_t folded = lowest + exponent % width;
@@ -208,133 +277,198 @@ inline int bucket_of(double ulps) {
 struct hunt_result {
   int bucket = -1;  // -1 for an invalid input
   double ulps = 0;
-  triple<double> input{};
+  input<double> x{};
   contact_case which = contact_case::invalid;
 };
 
-inline hunt_result check_cancellation(const std::uint8_t* data, std::size_t size) {
-  hunt_result result;
-  result.input = {fold_into_window(take_double(data, size, 0)), fold_into_window(take_double(data, size, 8)),
-                  std::fabs(fold_into_window(take_double(data, size, 16)))};
-  const triple<double>& x = result.input;
-  statistics& st = stats();
-  ++st.inputs;
+inline input<double> take_folded_input(const std::uint8_t* data, std::size_t size) {
+  return {fold_into_window(take_double(data, size, 0)), fold_into_window(take_double(data, size, 8)),
+          std::fabs(fold_into_window(take_double(data, size, 16)))};
+}
+
+// The textbook algorithm's error on x and its feedback bucket.
+inline hunt_result measure_textbook(const input<double>& x) {
   const reference::certified exact = reference::solve<double>(x.u, x.dy, x.phi);
   const solution<double> got = solve_textbook(x.u, x.dy, x.phi);
+  hunt_result result;
+  result.x = x;
   result.ulps = reference::ulp_error<double>(got.s, exact);
   result.which = exact.which;
-  st.record("textbook", result.ulps, x, exact.which);
   result.bucket = (static_cast<int>(exact.which) - 1) * hunter::per_case + hunter::bucket_of(result.ulps);
+  return result;
+}
+
+inline hunt_result check_cancellation(const std::uint8_t* data, std::size_t size) {
+  statistics& st = stats();
+  ++st.inputs;
+  const hunt_result result = measure_textbook(take_folded_input(data, size));
+  st.record(run_label<double>(algorithm::textbook), result.ulps, result.x, result.which);
   return result;
 }
 
 // ---- invariants ---------------------------------------------------------------
 
-// Doubles as ordered integers (-0 and +0 both map to 0), for stepping in ulps.
-inline std::int64_t key_of(double x) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, 8);
-  const std::uint64_t magnitude = bits & ~(std::uint64_t(1) << 63);
-  return (bits >> 63) ? -std::int64_t(magnitude) : std::int64_t(magnitude);
-}
-
-inline double from_key(std::int64_t k) {
-  const std::uint64_t bits = k >= 0 ? std::uint64_t(k) : ((std::uint64_t(1) << 63) | std::uint64_t(-k));
-  double x;
-  std::memcpy(&x, &bits, 8);
-  return x;
-}
-
-inline double ulp_at(double x) {
-  x = std::fabs(x);
-  if (x < DBL_MIN) return std::numeric_limits<double>::denorm_min();
-  int e = 0;
-  std::frexp(x, &e);
-  return std::ldexp(1.0, e - 53);
-}
-
 // Layout: byte 0 mode; bytes 1-24 u, dy, phi; byte 25 the step (2^(b % 48)
 // ulps between neighbours); byte 26 which boundary (mode 3).
 //   mode 0: u swept around u           mode 1: u swept around its case boundary
 //   mode 2: dy swept around dy         mode 3: dy swept around 0, -u or u / (phi - 1)
+struct sweep_request {
+  int mode = 0;
+  input<double> base{};
+  int step_log2 = 0;  // neighbours are 2^step_log2 doubles apart
+  int boundary = 0;   // mode 3: 0 for dy = 0, 1 for u = -dy, 2 for u = dy (phi - 1)
+
+  bool sweeps_u() const { return mode < 2; }
+  // base, with the swept variable set to `value`
+  input<double> at(double value) const {
+    input<double> x = base;
+    (sweeps_u() ? x.u : x.dy) = value;
+    return x;
+  }
+};
+
+inline sweep_request take_sweep_request(const std::uint8_t* data, std::size_t size) {
+  sweep_request r;
+  r.mode = take_byte(data, size, 0) % 4;
+  r.base = {take_double(data, size, 1), take_double(data, size, 9), take_double(data, size, 17)};
+  r.step_log2 = take_byte(data, size, 25) % 48;
+  r.boundary = take_byte(data, size, 26) % 3;
+  return r;
+}
+
+// The value the sweep is centred on (0 where that is not finite).
+inline double sweep_centre(const sweep_request& r) {
+  const input<double>& b = r.base;
+  double centre = r.sweeps_u() ? b.u : b.dy;
+  if (r.mode == 1) centre = b.dy <= 0 ? -b.dy : std::fma(b.dy, b.phi, -b.dy);  // u = -dy or u = dy (phi - 1)
+  if (r.mode == 3) {
+    switch (r.boundary) {
+      case 0: centre = 0; break;
+      case 1: centre = -b.u; break;                               // u = -dy
+      default: centre = b.phi == 1 ? 0 : b.u / (b.phi - 1);  // u = dy (phi - 1)
+    }
+  }
+  return std::isfinite(centre) ? centre : 0;
+}
+
+struct sweep_point {
+  bool present = false;  // false beyond the finite doubles
+  double x = 0;          // the swept variable
+  double s = 0;          // stable's answer
+  double ulp = 0;        // one ulp of double at s (finite s only)
+  contact_case which = contact_case::invalid;
+};
+
+inline constexpr int sweep_points = 9;
+using sweep = std::array<sweep_point, sweep_points>;
+
+// The swept values: 2^step_log2 doubles apart around the centre, absent where
+// they would leave the finite doubles.
+inline sweep place_sweep(const sweep_request& r) {
+  const std::int64_t centre = detail::ordered_key(sweep_centre(r));
+  const std::int64_t step = std::int64_t(1) << r.step_log2;
+  const std::int64_t limit = detail::ordered_key((std::numeric_limits<double>::max)());
+  sweep points;
+  for (int i = 0; i < sweep_points; ++i) {
+    const std::int64_t k = centre + (i - sweep_points / 2) * step;
+    points[i].present = -limit <= k && k <= limit;
+    if (points[i].present) points[i].x = detail::from_ordered_key<double>(k);
+  }
+  return points;
+}
+
+// One ulp of double at a finite x, as the reference counts it (reference::ulp_of).
+inline double ulp_at(double x) {
+  reference::real exact(std::numeric_limits<double>::digits);
+  mpfr_set_d(exact.get(), x, MPFR_RNDN);  // exact
+  return mpfr_get_d(reference::ulp_of<double>(exact).get(), MPFR_RNDN);
+}
+
+// Stable's answer at every point; NaN for a valid input is a finding.
+inline void solve_sweep(const sweep_request& r, sweep& points) {
+  for (sweep_point& p : points) {
+    if (!p.present) continue;
+    const input<double> x = r.at(p.x);
+    const solution<double> got = solve_stable(x.u, x.dy, x.phi);
+    p.s = got.s;
+    p.which = got.which;
+    if (std::isnan(got.s) || got.which == contact_case::invalid)
+      fail("invariants", "stable returned NaN for a valid input",
+           describe_input(x) + "  got s = " + hex(got.s) + ", case " + case_label(got.which) + "\n");
+    if (std::isfinite(got.s)) p.ulp = ulp_at(got.s);
+  }
+}
+
+// How far two neighbouring answers may stray from the exact ones: `bound`
+// ulps on each side, doubled.
+inline long double pair_tolerance(const sweep_point& a, const sweep_point& b, double bound) {
+  return 2.0L * bound * ((long double)a.ulp + b.ulp);
+}
+
+// s is non-increasing in u and non-decreasing in dy, up to the tolerance.
+inline std::string monotonicity_problem(const sweep_request& r, const sweep_point& a, const sweep_point& b,
+                                        long double tolerance) {
+  const long double first = a.s, second = b.s;
+  if (r.sweeps_u() && second > first + tolerance) return "s increases with u";
+  if (!r.sweeps_u() && second < first - tolerance) return "s decreases as dy increases";
+  return "";
+}
+
+// As u grows the case may only go free -> impact (dy <= 0), release -> contact (dy > 0).
+inline std::string case_order_problem(const sweep_request& r, const sweep_point& a, const sweep_point& b) {
+  if (!r.sweeps_u()) return "";
+  if (r.base.dy <= 0 && a.which == contact_case::impact && b.which == contact_case::free)
+    return "the case goes from impact back to free as u increases";
+  if (r.base.dy > 0 && a.which == contact_case::contact && b.which == contact_case::release)
+    return "the case goes from contact back to release as u increases";
+  return "";
+}
+
+// |s2 - s1| <= |u2 - u1| and |s2 - s1| <= 2 phi |dy2 - dy1|, up to the tolerance.
+inline std::string lipschitz_problem(const sweep_request& r, const sweep_point& a, const sweep_point& b,
+                                     long double tolerance) {
+  const long double first = a.s, second = b.s;
+  const long double distance = (long double)b.x - a.x;
+  const long double lipschitz = r.sweeps_u() ? 1.0L : 2.0L * r.base.phi;
+  const long double slack = 1 + std::ldexp(1.0L, -58);
+  if (std::fabs(second - first) <= lipschitz * distance * slack + tolerance) return "";
+  return r.sweeps_u() ? "s jumps: |s(u2) - s(u1)| > |u2 - u1|" : "s jumps: |s(dy2) - s(dy1)| > 2 phi |dy2 - dy1|";
+}
+
+[[noreturn]] inline void fail_pair(const sweep_request& r, const sweep_point& a, const sweep_point& b,
+                                   const std::string& problem, long double tolerance, double bound) {
+  std::ostringstream details;
+  details << "  first input:\n" << describe_input(r.at(a.x)) << "  first  s = " << hex(a.s) << " (" << decimal(a.s)
+          << "), case " << case_label(a.which) << "\n"
+          << "  second input:\n" << describe_input(r.at(b.x)) << "  second s = " << hex(b.s) << " (" << decimal(b.s)
+          << "), case " << case_label(b.which) << "\n"
+          << "  tolerance " << double(tolerance) << " (" << bound << " ulps on each side, doubled)\n";
+  fail("invariants", problem, details.str());
+}
+
+// The checks of one pair of neighbours; infinities are the differential target's to judge.
+inline void check_pair(const sweep_request& r, const sweep_point& a, const sweep_point& b, double bound) {
+  if (!a.present || !b.present) return;
+  if (!std::isfinite(a.s) || !std::isfinite(b.s)) return;
+  const long double tolerance = pair_tolerance(a, b, bound);
+  std::string problem = monotonicity_problem(r, a, b, tolerance);
+  if (problem.empty()) problem = case_order_problem(r, a, b);
+  if (problem.empty()) problem = lipschitz_problem(r, a, b, tolerance);
+  if (!problem.empty()) fail_pair(r, a, b, problem, tolerance, bound);
+}
+
 inline void check_invariants(const std::uint8_t* data, std::size_t size) {
   statistics& st = stats();
   ++st.inputs;
-  std::uint8_t head[1] = {0}, tail[2] = {0, 0};
-  take_bytes(data, size, 0, head, 1);
-  take_bytes(data, size, 25, tail, 2);
-  const int mode = head[0] % 4;
-  triple<double> base{take_double(data, size, 1), take_double(data, size, 9), take_double(data, size, 17)};
-  if (!is_valid(base)) {
+  const sweep_request request = take_sweep_request(data, size);
+  if (!is_valid(request.base)) {
     ++st.invalid_inputs;
     return;
   }
-  const bool sweep_u = mode < 2;
-  double centre = sweep_u ? base.u : base.dy;
-  if (mode == 1) centre = base.dy <= 0 ? -base.dy : std::fma(base.dy, base.phi, -base.dy);  // u = -dy or u = dy (phi - 1)
-  if (mode == 3) {
-    switch (tail[1] % 3) {
-      case 0: centre = 0; break;
-      case 1: centre = -base.u; break;  // u = -dy
-      default: centre = base.phi == 1 ? 0 : base.u / (base.phi - 1);  // u = dy (phi - 1)
-    }
-  }
-  if (!std::isfinite(centre)) centre = 0;
-  const std::int64_t step = std::int64_t(1) << (tail[0] % 48);
-  const std::int64_t limit = key_of(DBL_MAX);
-
-  constexpr int points = 9;
-  double x[points], s[points];
-  contact_case which[points];
-  bool present[points];
-  const double bound = stable_bound();
-  for (int i = 0; i < points; ++i) {
-    const std::int64_t k = key_of(centre) + (i - points / 2) * step;
-    present[i] = -limit <= k && k <= limit;
-    if (!present[i]) continue;
-    x[i] = from_key(k);
-    triple<double> input = base;
-    (sweep_u ? input.u : input.dy) = x[i];
-    const solution<double> r = solve_stable(input.u, input.dy, input.phi);
-    s[i] = r.s;
-    which[i] = r.which;
-    if (std::isnan(r.s) || r.which == contact_case::invalid)
-      fail("invariants", "stable returned NaN for a valid input",
-           describe_input(input) + "  got s = " + hex(r.s) + ", case " + case_label(r.which) + "\n");
-  }
-
-  for (int i = 0; i + 1 < points; ++i) {
-    if (!present[i] || !present[i + 1]) continue;
-    if (!std::isfinite(s[i]) || !std::isfinite(s[i + 1])) continue;  // the differential target judges infinities
-    const long double a = s[i], b = s[i + 1];
-    const long double tolerance = 2.0L * bound * ((long double)ulp_at(s[i]) + ulp_at(s[i + 1]));
-    const long double distance = (long double)x[i + 1] - x[i];
-    const long double lipschitz = sweep_u ? 1.0L : 2.0L * base.phi;
-    const long double slack = 1 + std::ldexp(1.0L, -58);
-    std::string problem;
-    if (sweep_u) {
-      if (b > a + tolerance) problem = "s increases with u";
-      else if (base.dy <= 0 && which[i] == contact_case::impact && which[i + 1] == contact_case::free)
-        problem = "the case goes from impact back to free as u increases";
-      else if (base.dy > 0 && which[i] == contact_case::contact && which[i + 1] == contact_case::release)
-        problem = "the case goes from contact back to release as u increases";
-    } else if (b < a - tolerance) {
-      problem = "s decreases as dy increases";
-    }
-    if (problem.empty() && std::fabs(b - a) > lipschitz * distance * slack + tolerance)
-      problem = sweep_u ? "s jumps: |s(u2) - s(u1)| > |u2 - u1|" : "s jumps: |s(dy2) - s(dy1)| > 2 phi |dy2 - dy1|";
-    if (problem.empty()) continue;
-    triple<double> first = base, second = base;
-    (sweep_u ? first.u : first.dy) = x[i];
-    (sweep_u ? second.u : second.dy) = x[i + 1];
-    std::ostringstream details;
-    details << "  first input:\n" << describe_input(first) << "  first  s = " << hex(s[i]) << " (" << decimal(s[i])
-            << "), case " << case_label(which[i]) << "\n"
-            << "  second input:\n" << describe_input(second) << "  second s = " << hex(s[i + 1]) << " ("
-            << decimal(s[i + 1]) << "), case " << case_label(which[i + 1]) << "\n"
-            << "  tolerance " << double(tolerance) << " (" << bound << " ulps on each side, doubled)\n";
-    fail("invariants", problem, details.str());
-  }
+  sweep points = place_sweep(request);
+  solve_sweep(request, points);
+  const double bound = claimed().largest();  // neighbours may lie in different branches
+  for (int i = 0; i + 1 < sweep_points; ++i) check_pair(request, points[i], points[i + 1], bound);
 }
 
 // ---- by name --------------------------------------------------------------------

@@ -1,10 +1,18 @@
-// Shared pieces of the fuzz targets: input decoding, the proven bound of the
+// Shared pieces of the fuzz targets: input decoding, the claimed bounds of the
 // stable algorithm, the failure report, and the statistics that the replay
 // tool prints. Plain C++ (no libFuzzer header): the same code is compiled with
 // clang + libFuzzer for campaigns and with g++ into the corpus replay of ctest.
+//
+// The vocabulary is the project's, not the fuzzers': type names come from
+// contact/types.hpp, case names and equations from contact/cases.hpp, the
+// input triple from contact/harness/families.hpp, and the bounds file is read
+// by contact/harness/claimed_bounds.hpp.
 #pragma once
 
-#include <cfloat>
+#include <quadmath.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdint>
@@ -12,27 +20,27 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <unistd.h>
+#include <vector>
 
+#include "contact/cases.hpp"
+#include "contact/harness/claimed_bounds.hpp"
+#include "contact/harness/families.hpp"
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
-
-#ifndef CONTACT_FUZZ_NO_FLOAT128
-#include <quadmath.h>
-
 #include "contact/types.hpp"
-#endif
 
 #ifndef CONTACT_CLAIMED_BOUNDS
 #error "define CONTACT_CLAIMED_BOUNDS as the path of proofs/claimed_bounds.txt"
 #endif
 
 namespace contact::fuzz {
+
+using harness::input;
 
 // ---- inputs ----------------------------------------------------------------
 
@@ -41,6 +49,12 @@ namespace contact::fuzz {
 inline void take_bytes(const std::uint8_t* data, std::size_t size, std::size_t offset, void* out, std::size_t count) {
   std::memset(out, 0, count);
   if (offset < size) std::memcpy(out, data + offset, std::min(count, size - offset));
+}
+
+inline std::uint8_t take_byte(const std::uint8_t* data, std::size_t size, std::size_t offset) {
+  std::uint8_t byte = 0;
+  take_bytes(data, size, offset, &byte, 1);
+  return byte;
 }
 
 // A double from 8 raw little-endian bytes: NaN, infinities, zeros and
@@ -71,22 +85,17 @@ inline long double take_long_double(const std::uint8_t* data, std::size_t size, 
   return x;
 }
 
-#ifndef CONTACT_FUZZ_NO_FLOAT128
 // A binary128 from 16 raw bytes: every encoding is a valid value.
 inline contact::float128 take_float128(const std::uint8_t* data, std::size_t size, std::size_t offset) {
   __float128 x;
   take_bytes(data, size, offset, &x, sizeof x);
   return contact::float128(x);
 }
-#endif
 
+// Valid as the API defines it (finite u, dy, phi and phi >= 0), written out
+// here rather than taken from the solver, whose rejection it checks.
 template <class T>
-struct triple {
-  T u, dy, phi;
-};
-
-template <class T>
-bool is_valid(const triple<T>& x) {
+bool is_valid(const input<T>& x) {
   using std::isfinite;
   return isfinite(x.u) && isfinite(x.dy) && isfinite(x.phi) && !(x.phi < 0);
 }
@@ -106,13 +115,9 @@ std::string printed(const T& x, const printf_formats& formats) {
     std::snprintf(text, sizeof text, formats.for_double, double(x));
   } else if constexpr (std::is_same_v<T, long double>) {
     std::snprintf(text, sizeof text, formats.for_long_double, x);
-  }
-#ifndef CONTACT_FUZZ_NO_FLOAT128
-  else if constexpr (std::is_same_v<T, contact::float128>) {
+  } else if constexpr (std::is_same_v<T, contact::float128>) {
     quadmath_snprintf(text, sizeof text, formats.for_float128, x.backend().value());
-  }
-#endif
-  else {
+  } else {
     static_assert(std::is_same_v<T, double>, "no printf format for this type");
   }
   return text;
@@ -128,22 +133,21 @@ std::string decimal(const T& x) {
   return printed(x, {"%.17g", "%.21Lg", "%.36Qg"});
 }
 
-template <class T>
-const char* type_label() {
-  if constexpr (std::is_same_v<T, double>) return "double";
-  else if constexpr (std::is_same_v<T, long double>) return "long double";
-  else return "float128";
+// "1 free (A.29)" ... "4 release (A.32)", "0 invalid": the number the CLI
+// prints, the name and the equation of contact/cases.hpp.
+inline std::string case_label(contact_case c) {
+  std::string label = std::to_string(static_cast<int>(c)) + " " + std::string(name_of(c));
+  if (c != contact_case::invalid) label += " " + std::string(equation_of(c));
+  return label;
 }
 
-inline const char* case_label(contact_case c) {
-  switch (c) {
-    case contact_case::free: return "1 free (A.29)";
-    case contact_case::impact: return "2 impact (A.30)";
-    case contact_case::contact: return "3 contact (A.31)";
-    case contact_case::release: return "4 release (A.32)";
-    default: return "0 invalid";
-  }
+// "double stable", "long_double textbook", ...: what the statistics are kept per.
+template <class T>
+std::string run_label(algorithm a) {
+  return std::string(type_name<T>) + " " + std::string(name_of(a));
 }
+
+// ---- findings ----------------------------------------------------------------
 
 // The file being replayed, if any (set by the replay tool), for the report.
 inline const char*& current_input_name() {
@@ -174,21 +178,20 @@ inline bool& throw_on_finding() {
 }
 
 template <class T>
-std::string describe_input(const triple<T>& x) {
+std::string describe_input(const input<T>& x) {
   std::ostringstream out;
-  out << "  type: " << type_label<T>() << "\n"
+  out << "  type: " << type_name<T> << "\n"
       << "  u   = " << hex(x.u) << "   (" << decimal(x.u) << ")\n"
       << "  dy  = " << hex(x.dy) << "   (" << decimal(x.dy) << ")\n"
       << "  phi = " << hex(x.phi) << "   (" << decimal(x.phi) << ")\n";
   return out.str();
 }
 
-// ---- the proven bound ---------------------------------------------------------
+// ---- the claimed bounds ---------------------------------------------------------
 
-// The largest of the per-branch bounds in proofs/claimed_bounds.txt: the last
-// number on each non-comment line ('#' starts a comment). A missing file, or one
-// without a bound, is a fatal error at start-up. A relative path is taken from the directory of the executable (OSS-Fuzz
-// copies the file next to the fuzzers).
+// Where proofs/claimed_bounds.txt is: $CONTACT_CLAIMED_BOUNDS, else the path
+// compiled in; a relative one is taken from the directory of the executable
+// (OSS-Fuzz copies the file next to the fuzzers).
 inline std::string bounds_path() {
   if (const char* override_path = std::getenv("CONTACT_CLAIMED_BOUNDS")) return override_path;
   std::string path = CONTACT_CLAIMED_BOUNDS;
@@ -197,54 +200,32 @@ inline std::string bounds_path() {
     const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
     if (n > 0) {
       exe[n] = '\0';
-      std::string dir(exe);
-      dir = dir.substr(0, dir.rfind('/'));
-      path = dir + "/" + path;
+      const std::string executable(exe);
+      path = executable.substr(0, executable.rfind('/')) + "/" + path;
     }
   }
   return path;
 }
 
-// Where the bound came from, for the replay tool's header line.
-inline std::string& bound_source() {
-  static std::string source;
-  return source;
-}
-
-inline double load_stable_bound() {
-  const std::string path = bounds_path();
-  bound_source() = path;
-  std::ifstream in(path);
-  if (!in) {
-    std::fprintf(stderr, "==contact-fuzz== FATAL: cannot read the claimed bounds file %s\n", path.c_str());
-    std::exit(2);
-  }
-  double largest = -1;
-  std::string line;
-  while (std::getline(in, line)) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream fields(line);
-    std::string token, last;
-    while (fields >> token) last = token;
-    if (last.empty()) continue;
-    char* end = nullptr;
-    const double value = std::strtod(last.c_str(), &end);
-    if (end == last.c_str() || *end != '\0' || !(value >= 0) || !std::isfinite(value)) {
-      std::fprintf(stderr, "==contact-fuzz== FATAL: %s: '%s' is not a bound\n", path.c_str(), line.c_str());
+// The bounds, read once, by the harness's parser; a file it rejects (missing,
+// malformed, a branch without a bound) is fatal at start-up.
+inline const harness::claimed_bounds& claimed() {
+  static const harness::claimed_bounds bounds = [] {
+    const std::string path = bounds_path();
+    try {
+      return harness::claimed_bounds::read(path);
+    } catch (const std::runtime_error& error) {
+      std::fprintf(stderr, "==contact-fuzz== FATAL: claimed bounds: %s\n", error.what());  // "FILE:LINE: reason"
       std::exit(2);
     }
-    largest = std::max(largest, value);
-  }
-  if (largest < 0) {
-    std::fprintf(stderr, "==contact-fuzz== FATAL: %s holds no bound\n", path.c_str());
-    std::exit(2);
-  }
-  return largest;
+  }();
+  return bounds;
 }
 
-inline double stable_bound() {
-  static const double bound = load_stable_bound();
-  return bound;
+// Where the bounds came from, for the replay tool's header line.
+inline const std::string& bound_source() {
+  static const std::string source = bounds_path();
+  return source;
 }
 
 // ---- statistics (printed by the replay tool's --stats) ----------------------
@@ -257,44 +238,51 @@ struct worst_case {
 
 struct statistics {
   long inputs = 0, invalid_inputs = 0;
-  // per label ("double stable", "long double textbook", ...)
+
+  // per run label ("double stable", "long_double textbook", ...)
   struct entry {
     std::string label;
     long runs = 0, non_finite = 0, over_1e6 = 0;
     worst_case worst;
+
+    bool is_worse(double ulps) const {
+      if (worst.ulps < 0) return true;  // the first run
+      if (std::isnan(ulps)) return !std::isnan(worst.ulps);
+      return !std::isnan(worst.ulps) && ulps > worst.ulps;
+    }
+
+    template <class T>
+    void add(double ulps, const input<T>& x, contact_case which) {
+      ++runs;
+      if (!std::isfinite(ulps)) ++non_finite;
+      if (ulps >= 1e6) ++over_1e6;
+      if (!is_worse(ulps)) return;
+      worst.ulps = ulps;
+      worst.input = "u=" + hex(x.u) + " dy=" + hex(x.dy) + " phi=" + hex(x.phi);
+      worst.which = case_label(which);
+    }
   };
-  entry entries[16];
-  int count = 0;
+  std::vector<entry> entries;  // in the order the labels first occur
 
   entry& of(const std::string& label) {
-    for (int i = 0; i < count; ++i)
-      if (entries[i].label == label) return entries[i];
-    entries[count].label = label;
-    return entries[count++];
+    const auto found = std::find_if(entries.begin(), entries.end(), [&](const entry& e) { return e.label == label; });
+    if (found != entries.end()) return *found;
+    entry& added = entries.emplace_back();
+    added.label = label;
+    return added;
   }
 
   template <class T>
-  void record(const std::string& label, double ulps, const triple<T>& x, contact_case which) {
-    entry& e = of(label);
-    ++e.runs;
-    if (!std::isfinite(ulps)) ++e.non_finite;
-    if (ulps >= 1e6) ++e.over_1e6;
-    const bool worse = std::isnan(ulps) ? !std::isnan(e.worst.ulps) : (!std::isnan(e.worst.ulps) && ulps > e.worst.ulps);
-    if (worse || e.worst.ulps < 0) {
-      e.worst.ulps = ulps;
-      e.worst.input = "u=" + hex(x.u) + " dy=" + hex(x.dy) + " phi=" + hex(x.phi);
-      e.worst.which = case_label(which);
-    }
+  void record(const std::string& label, double ulps, const input<T>& x, contact_case which) {
+    of(label).add(ulps, x, which);
   }
 
   void print(std::FILE* out) const {
     std::fprintf(out, "inputs: %ld (invalid: %ld)\n", inputs, invalid_inputs);
-    for (int i = 0; i < count; ++i) {
-      const entry& e = entries[i];
+    for (const entry& e : entries)
       std::fprintf(out, "  %-22s runs %-8ld worst %-12.4g ulps  non-finite errors %-6ld >=1e6 ulps %-6ld at %s [%s]\n",
                    e.label.c_str(), e.runs, e.worst.ulps, e.non_finite, e.over_1e6, e.worst.input.c_str(),
                    e.worst.which.c_str());
-    }
   }
 };
 

@@ -72,8 +72,10 @@ int main(int argc, char** argv) {
     files.insert(files.end(), more.begin(), more.end());
   }
   if (!ok) return 2;
-  const double bound = contact::fuzz::stable_bound();
-  std::printf("stable bound: %g ulps (from %s)\n", bound, contact::fuzz::bound_source().c_str());
+  const auto& bounds = contact::fuzz::claimed();
+  std::printf("claimed bounds (from %s):", contact::fuzz::bound_source().c_str());
+  for (const auto& [branch, ulps] : bounds.per_branch()) std::printf(" %s %g,", branch.c_str(), ulps);
+  std::printf(" largest %g ulps\n", bounds.largest());
   std::fflush(stdout);
   contact::fuzz::throw_on_finding() = true;
   std::vector<std::string> failing;

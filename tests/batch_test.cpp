@@ -6,13 +6,15 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 #include <vector>
 
 #include "contact/batch.hpp"
+#include "contact/harness/families.hpp"
 #include "contact/solve.hpp"
 
 namespace {
+
+namespace harness = contact::harness;
 
 template <class T>
 struct lanes {
@@ -24,89 +26,56 @@ struct lanes {
   }
 };
 
-template <class T>
-T log_uniform(std::mt19937_64& rng, double low, double high) {
-  std::uniform_real_distribution<double> exponent(low, high);
-  return static_cast<T>(std::pow(10.0, exponent(rng)));
-}
-
-template <class T>
-T signed_value(std::mt19937_64& rng, double low, double high) {
-  const T x = log_uniform<T>(rng, low, high);
-  return (rng() & 1) ? x : T(-x);
-}
-
-template <class T>
-T ulps_away(T x, long k) {
-  for (; k > 0; --k) x = std::nextafter(x, std::numeric_limits<T>::infinity());
-  for (; k < 0; ++k) x = std::nextafter(x, -std::numeric_limits<T>::infinity());
-  return x;
-}
-
-// Physical, stiff and soft inputs, both case boundaries to a few ulps, the
-// cancellation regions, zeros, subnormals, extreme magnitudes and invalid input.
+// The input families of contact/harness/families.hpp, plus the lanes that
+// only the batch kernels care about: zeros and subnormals, the plain window's
+// edges, the contact/release boundary hit exactly, and invalid input.
 template <class T>
 lanes<T> inputs(std::size_t count, std::uint64_t seed, bool physical_only = false) {
-  std::mt19937_64 rng(seed);
+  using harness::distribution;
+  using shape = distribution::shape;
+  harness::seeded_source source(seed);
+  auto pick = [&](long n) { return source.integer(0, n - 1); };
+  const distribution displacement{shape::log10, -8, -2, 0}, phi_physical{shape::log10, -3, 6, 1},
+      phi_stiff{shape::log10, 6, 30, 1}, phi_soft{shape::log10, -30, -3, 1}, dy_wide{shape::log10, -10, 2, 1},
+      phi_wide{shape::log10, -3, 12, 1}, dy_small{shape::log10, -8, -2, 1};
   lanes<T> in;
-  const double top = std::numeric_limits<T>::max_exponent10 - 1.0;
-  const double bottom = std::numeric_limits<T>::min_exponent10 - 5.0;
+  auto add = [&](const harness::input<T>& x) { in.add(x.u, x.dy, x.phi); };
   while (in.u.size() < count) {
-    switch (physical_only ? 0 : rng() % 11) {
-      case 0:  // physical
-        in.add(signed_value<T>(rng, -8, -2), signed_value<T>(rng, -8, -2), log_uniform<T>(rng, -3, 6));
+    switch (physical_only ? 0 : pick(11)) {
+      case 0: add(harness::physical<T>(source, harness::audio_rate())); break;
+      case 1: add(harness::box<T>(source, displacement, displacement, harness::coin(source) ? phi_stiff : phi_soft)); break;
+      case 2: add(harness::free_impact_boundary<T>(source, dy_wide, phi_wide, 4)); break;
+      case 3: add(harness::contact_release_boundary<T>(source, dy_wide, phi_wide, 4)); break;
+      case 4:
+        add(harness::contact_cancellation<T>(source, dy_small, {shape::log10, -3, 8, 1}, {shape::log10, -16, -1, 0}, 0));
         break;
-      case 1:  // stiff and soft phi
-        in.add(signed_value<T>(rng, -8, -2), signed_value<T>(rng, -8, -2),
-               (rng() & 1) ? log_uniform<T>(rng, 6, 30) : log_uniform<T>(rng, -30, -3));
-        break;
-      case 2: {  // free / impact boundary: u = -dy within a few ulps
-        const T dy = -log_uniform<T>(rng, -10, 2);
-        in.add(ulps_away(T(-dy), long(rng() % 9) - 4), dy, log_uniform<T>(rng, -3, 12));
-        break;
-      }
-      case 3: {  // contact / release boundary: u = dy (phi - 1) within a few ulps
-        const T dy = log_uniform<T>(rng, -10, 2), phi = log_uniform<T>(rng, -3, 12);
-        in.add(ulps_away(T(dy * (phi - 1)), long(rng() % 9) - 4), dy, phi);
-        break;
-      }
-      case 4: {  // contact cancellation: s near 0
-        const T dy = log_uniform<T>(rng, -8, -2), phi = log_uniform<T>(rng, -3, 8);
-        const T t = 2 * phi * dy;
-        in.add(std::fma(t, signed_value<T>(rng, -16, -1), t), dy, phi);
-        break;
-      }
-      case 5: {  // release cancellation: u >> sqrt(phi) dy
-        const T dy = log_uniform<T>(rng, -8, -2), phi = log_uniform<T>(rng, 6, 16);
-        in.add(std::min(T(log_uniform<T>(rng, 0, 7) * std::sqrt(phi) * dy), T(dy * (phi - 1) / 2)), dy, phi);
-        break;
-      }
-      case 6:  // anything in the whole range, including beyond the plain window
-        in.add(signed_value<T>(rng, bottom, top), signed_value<T>(rng, bottom, top), log_uniform<T>(rng, bottom, top));
-        break;
+      case 5: add(harness::release_cancellation<T>(source, dy_small, {shape::log10, 6, 16, 1}, {shape::log10, 0, 7, 1})); break;
+      case 6: add(harness::whole_range<T>(source)); break;  // beyond the plain window too
       case 7: {  // zeros, signed zeros and subnormals
-        const T tiny = std::numeric_limits<T>::denorm_min() * T(rng() % 1000 + 1);
-        const T pick[] = {T(0), T(-0.0), tiny, T(-tiny), T(1e-5), T(-1e-5)};
-        in.add(pick[rng() % 6], pick[rng() % 6], std::fabs(pick[rng() % 6]));
+        const T tiny = std::numeric_limits<T>::denorm_min() * T(pick(1000) + 1);
+        const T values[] = {T(0), T(-0.0), tiny, T(-tiny), T(1e-5), T(-1e-5)};
+        const T u = values[pick(6)], dy = values[pick(6)];
+        in.add(u, dy, std::fabs(values[pick(6)]));
         break;
       }
       case 8: {  // just inside and just outside the plain window's edges
         const long half = contact::detail::safe_window<T>::half_width();
-        const T edge = std::ldexp(T(1), static_cast<int>((rng() & 1) ? half : -half));
-        const T e = ulps_away(edge, long(rng() % 3) - 1);
-        in.add((rng() & 1) ? e : T(-e), signed_value<T>(rng, -8, -2), (rng() & 1) ? e : log_uniform<T>(rng, -3, 6));
+        const T edge = std::ldexp(T(1), static_cast<int>(harness::coin(source) ? half : -half));
+        const T e = contact::detail::ulp_steps(edge, pick(3) - 1);
+        const T u = harness::random_sign(source, e), dy = harness::draw<T>(source, displacement);
+        in.add(u, dy, harness::coin(source) ? e : harness::draw<T>(source, phi_physical));
         break;
       }
       case 9: {  // on the contact / release boundary exactly: u + dy - phi dy = 0 (often), phi dyadic
-        const T dy = log_uniform<T>(rng, -10, 2);
+        const T dy = harness::draw<T>(source, dy_wide);
         const T phis[] = {T(0.5), T(1), T(2), T(3), T(1.5), T(5), T(0.75)};
-        const T phi = phis[rng() % 7];
-        in.add(ulps_away(T(dy * (phi - 1)), long(rng() % 3) - 1), dy, phi);
+        add(harness::on_contact_release_boundary(dy, phis[pick(7)], pick(3) - 1));
         break;
       }
       default: {  // invalid: NaN, infinity, phi < 0
         const T bad[] = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(), T(1e-4)};
-        in.add(bad[rng() % 3], T(1e-4), (rng() & 1) ? T(-1) : bad[rng() % 3]);
+        const T u = bad[pick(3)];
+        in.add(u, T(1e-4), harness::coin(source) ? T(-1) : bad[pick(3)]);
         break;
       }
     }

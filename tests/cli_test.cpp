@@ -115,9 +115,16 @@ TEST(ContactSolve, RejectsUnknownAlgorithmAndUnreadableFile) {
 
 TEST(ContactSolve, HelpListsAlgorithmsAndTypes) {
   const auto r = run_cli("--help", "");
-  for (const char* word : {"textbook", "stable", "newton", "float", "double", "long_double", "float128",
-                           "cpp_bin_float_50", "cpp_bin_float_100", "mpfr"})
-    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  for (auto a : algorithms) EXPECT_NE(r.out.find(name_of(a)), std::string::npos) << name_of(a);
+  for (auto type : type_names) EXPECT_NE(r.out.find(type), std::string::npos) << type;
+}
+
+TEST(ContactSolve, RejectsUnknownTypeNamingTheKnownOnes) {
+  const auto r = run_cli("--type half", "3 1 3\n");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("unknown type 'half'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cpp_bin_float_100"), std::string::npos) << r.err;
 }
 
 TEST(ContactSolve, WiderTypesPrintRoundTripDecimals) {

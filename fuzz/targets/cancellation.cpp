@@ -43,8 +43,8 @@ void announce(const char* what, const contact::fuzz::hunt_result& r) {
   std::snprintf(line, sizeof line,
                 "==contact-fuzz== hunter: %s after %.3f s (execution %ld of this process, pid %d): "
                 "u=%s dy=%s phi=%s case %s, textbook error %.6g ulps\n",
-                what, now() - start_time, executions, int(getpid()), hex(r.input.u).c_str(), hex(r.input.dy).c_str(),
-                hex(r.input.phi).c_str(), contact::fuzz::case_label(r.which), r.ulps);
+                what, now() - start_time, executions, int(getpid()), hex(r.x.u).c_str(), hex(r.x.dy).c_str(),
+                hex(r.x.phi).c_str(), contact::fuzz::case_label(r.which).c_str(), r.ulps);
   std::fputs(line, stderr);
   if (const char* events = std::getenv("CONTACT_FUZZ_EVENTS")) {
     const int fd = open(events, O_WRONLY | O_CREAT | O_APPEND, 0644);

@@ -9,7 +9,7 @@
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   contact::fuzz::print_stats_at_exit_if_asked();
-  contact::fuzz::stable_bound();  // read the claimed bounds now: a missing file fails at start-up
+  contact::fuzz::claimed();  // read the claimed bounds now: a missing or malformed file fails at start-up
   return 0;
 }
 

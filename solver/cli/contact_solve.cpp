@@ -6,6 +6,7 @@
 // line gives "error REASON" and a message with its line number on stderr.
 // Exit status 1 if any line was bad, 2 for bad options or an unreadable file.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -21,11 +22,6 @@
 #include "contact/types.hpp"
 
 namespace {
-
-struct parse_result {
-  bool ok;
-  std::string reason;
-};
 
 // A hex float "[+-]0xH.HHHp[+-]D", read exactly into T (digit by digit, then scaled).
 template <class T>
@@ -140,10 +136,12 @@ int main(int argc, char** argv) {
   CLI::App app{"Solves the one-sided contact step (A.2) for lines 'u dy phi' (decimal or C99 hex floats; '#' starts a comment)."};
   std::string algorithm_name = "stable", type_name = "double", file;
   unsigned mpfr_digits = 50;
-  std::vector<std::string> algorithm_names, type_names(std::begin(contact::type_names), std::end(contact::type_names));
+  std::vector<std::string> algorithm_names;
+  std::string known_types;
+  for (auto name : contact::type_names) known_types += (known_types.empty() ? "" : ", ") + std::string(name);
   for (auto a : contact::algorithms) algorithm_names.emplace_back(contact::name_of(a));
   app.add_option("--algo", algorithm_name, "algorithm")->check(CLI::IsMember(algorithm_names))->capture_default_str();
-  app.add_option("--type", type_name, "scalar type")->check(CLI::IsMember(type_names))->capture_default_str();
+  app.add_option("--type", type_name, "scalar type: " + known_types)->capture_default_str();
   app.add_option("--mpfr-digits", mpfr_digits, "decimal digits of the mpfr type")->check(CLI::Range(10u, 10000u))->capture_default_str();
   app.add_option("file", file, "input file (default: standard input)");
   try {
@@ -165,6 +163,9 @@ int main(int argc, char** argv) {
   }
   std::istream& in = file.empty() ? std::cin : file_stream;
   int status = 0;
-  contact::with_type(type_name, [&](auto zero) { status = run<decltype(zero)>(in, method); });
+  if (!contact::with_type(type_name, [&](auto zero) { status = run<decltype(zero)>(in, method); })) {
+    std::cerr << "contact-solve: unknown type '" << type_name << "' (known: " << known_types << ")\n";
+    return 2;
+  }
   return status;
 }

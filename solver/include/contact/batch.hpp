@@ -105,7 +105,8 @@ CONTACT_BATCH_INLINE bits_t<T> inside_window(T abs_u, T abs_dy, T phi) {
 static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
                   std::has_single_bit(unsigned(2 * vector_window<float>)),
               "one test of the OR");
-static_assert(vector_window<double> <= 240 && vector_window<float> <= 24, "inside safe_window's half-width");
+static_assert(vector_window<double> <= detail::plain_window<double> && vector_window<float> <= detail::plain_window<float>,
+              "inside safe_window's half-width");
 
 // One lane of the branch-free path. Returns all ones if s and which are
 // solve_stable's, and zero if the lane must be redone by the scalar path: it

@@ -25,6 +25,20 @@ constexpr std::string_view equation_of(contact_case c) {
   }
 }
 
+// The case's name, as the CLI, the report and the fuzzers print it.
+constexpr std::string_view name_of(contact_case c) {
+  switch (c) {
+    case contact_case::free: return "free";
+    case contact_case::impact: return "impact";
+    case contact_case::contact: return "contact";
+    case contact_case::release: return "release";
+    default: return "invalid";
+  }
+}
+
+inline constexpr contact_case valid_cases[] = {contact_case::free, contact_case::impact, contact_case::contact,
+                                               contact_case::release};
+
 // Complementarity: the side of dy on which s lies, as each case claims it.
 template <class T>
 constexpr bool lies_on_its_side(contact_case c, const T& s, const T& dy) {

@@ -22,6 +22,7 @@
 #include "detail/float_tools.hpp"
 #include "detail/input.hpp"
 #include "detail/scaled.hpp"
+#include "detail/window.hpp"
 
 namespace contact {
 namespace stable_form {
@@ -34,10 +35,10 @@ namespace stable_form {
 template <class Num>
 Num impact(const Num& u, const Num& gap, const Num& phi) {
   using detail::fused_multiply_add;
-  using std::sqrt;
+  using detail::square_root;
   const Num push = phi * gap;  // phi |dy|
   const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
-  return -((u + Num(2) * push) + sqrt(discriminant)) / (Num(2) * (Num(1) + phi));
+  return -((u + Num(2) * push) + square_root(discriminant)) / (Num(2) * (Num(1) + phi));
 }
 
 // (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
@@ -55,9 +56,9 @@ Num contact(const Num& u, const Num& dy, const Num& phi) {
 template <class Num>
 Num release(const Num& u, const Num& dy, const Num& phi) {
   using detail::fused_multiply_add;
-  using std::sqrt;
+  using detail::square_root;
   const Num stiffness_term = (phi * dy) * dy;  // phi dy^2
-  const Num root = sqrt(fused_multiply_add(u, u, Num(4) * stiffness_term));
+  const Num root = square_root(fused_multiply_add(u, u, Num(4) * stiffness_term));
   if (u > Num(0)) return Num(2) * stiffness_term / (u + root);
   return (root - u) / Num(2);
 }
@@ -65,31 +66,6 @@ Num release(const Num& u, const Num& dy, const Num& phi) {
 }  // namespace stable_form
 
 namespace detail {
-
-// Exponent window inside which plain T arithmetic cannot overflow or underflow
-// in any of the formulas above (their intermediates are of degree three at most
-// in u, dy and phi, and the least significant bit of a difference lies at most
-// `digits` binades lower).
-template <class T>
-struct safe_window {
-  static long half_width() {
-    return (long(std::numeric_limits<T>::max_exponent) - long(precision_of<T>())) / 4 - 2;
-  }
-  static bool holds(const T& x) {
-    using std::fabs;
-    const T magnitude = fabs(x);
-    if (magnitude == 0) return true;
-    if constexpr (std::numeric_limits<T>::is_bounded && std::numeric_limits<T>::max_exponent < 20000) {
-      static const T lowest = scaled<T>::shifted(T(1), -half_width());
-      static const T highest = scaled<T>::shifted(T(1), half_width());
-      return lowest <= magnitude && magnitude <= highest;
-    } else {
-      const long bound = half_width();
-      return scaled<T>::shifted(T(1), -bound) <= magnitude && magnitude <= scaled<T>::shifted(T(1), bound);
-    }
-  }
-  static bool holds(const T& u, const T& dy, const T& phi) { return holds(u) && holds(dy) && holds(phi); }
-};
 
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
 // enters as the exact pair of two_prod; the sign is then that of an exact sum.

@@ -2,9 +2,14 @@
 // templates break fma and generic code, so every multiprecision type is et_off.
 #pragma once
 
+#if defined(__STRICT_ANSI__)
+#error "contact/types.hpp needs GNU extensions (-std=gnu++20): Boost 1.74's float128 uses __float128 literals"
+#endif
+
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/float128.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -26,26 +31,44 @@ using bin_float_100 = boost::multiprecision::number<boost::multiprecision::cpp_b
 using mpfr_float = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
                                                  boost::multiprecision::et_off>;
 
-template <class T> constexpr std::string_view type_name = "?";
-template <> constexpr std::string_view type_name<float> = "float";
-template <> constexpr std::string_view type_name<double> = "double";
-template <> constexpr std::string_view type_name<long double> = "long_double";
-template <> constexpr std::string_view type_name<float128> = "float128";
-template <> constexpr std::string_view type_name<bin_float_50> = "cpp_bin_float_50";
-template <> constexpr std::string_view type_name<bin_float_100> = "cpp_bin_float_100";
-template <> constexpr std::string_view type_name<mpfr_float> = "mpfr";
+// The registry: every scalar type the project instantiates, once, with its
+// name. The CLI's --type, the report's scenes, the tests' typed suites and the
+// fuzzers all take their list from here; a name not in it is an error.
+template <class... Ts>
+struct type_list {};
+using scalar_types = type_list<float, double, long double, float128, bin_float_50, bin_float_100, mpfr_float>;
 
-// Calls f(T{}) for the type named `name`; false if there is none.
+template <class T>
+constexpr std::string_view type_name = "?";
+template <> inline constexpr std::string_view type_name<float> = "float";
+template <> inline constexpr std::string_view type_name<double> = "double";
+template <> inline constexpr std::string_view type_name<long double> = "long_double";
+template <> inline constexpr std::string_view type_name<float128> = "float128";
+template <> inline constexpr std::string_view type_name<bin_float_50> = "cpp_bin_float_50";
+template <> inline constexpr std::string_view type_name<bin_float_100> = "cpp_bin_float_100";
+template <> inline constexpr std::string_view type_name<mpfr_float> = "mpfr";
+
+inline constexpr auto type_names = []<class... Ts>(type_list<Ts...>) {
+  return std::array<std::string_view, sizeof...(Ts)>{type_name<Ts>...};
+}(scalar_types{});
+
+// Calls f(T{}) for each registered T, in the registry's order.
 template <class F>
-bool with_type(std::string_view name, F&& f) {
-  if (name == "float") return f(float{}), true;
-  if (name == "double") return f(double{}), true;
-  if (name == "long_double") return f((long double){}), true;
-  if (name == "float128") return f(float128{}), true;
-  if (name == "cpp_bin_float_50") return f(bin_float_50{}), true;
-  if (name == "cpp_bin_float_100") return f(bin_float_100{}), true;
-  if (name == "mpfr") return f(mpfr_float{}), true;
-  return false;
+void for_each_type(F&& f) {
+  [&]<class... Ts>(type_list<Ts...>) { (f(Ts{}), ...); }(scalar_types{});
+}
+
+// Calls f(T{}) for the type named `name`; false if no registered type has that name.
+template <class F>
+[[nodiscard]] bool with_type(std::string_view name, F&& f) {
+  bool found = false;
+  for_each_type([&](auto zero) {
+    if (!found && type_name<decltype(zero)> == name) {
+      found = true;
+      f(zero);
+    }
+  });
+  return found;
 }
 
 // x as text that reads back as the same T: C99 hex for float and double,
@@ -64,8 +87,5 @@ std::string round_trip_text(const T& x) {
     return out.str();
   }
 }
-
-inline constexpr std::string_view type_names[] = {"float", "double", "long_double", "float128",
-                                                  "cpp_bin_float_50", "cpp_bin_float_100", "mpfr"};
 
 }  // namespace contact

@@ -3,7 +3,9 @@
 // Boost.Multiprecision types (et_off) use theirs.
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -11,6 +13,11 @@
 
 #include <boost/math/special_functions/next.hpp>
 #include <boost/math/tools/precision.hpp>
+
+// Declared, not included: the core solver needs no quadmath header.
+namespace boost::multiprecision::backends {
+struct float128_backend;
+}
 
 namespace contact::detail {
 
@@ -114,6 +121,79 @@ template <class T>
 T next_down(const T& x) {
   if (x <= -(std::numeric_limits<T>::max)()) return -std::numeric_limits<T>::infinity();
   return boost::math::float_prior(x);
+}
+
+// Whether T's sqrt rounds correctly. libquadmath's sqrtq (Boost's float128)
+// does not: about one square of a random float128 in fifty gets back a root
+// one ulp off.
+template <class T>
+struct has_correct_sqrt : std::true_type {};  // IEEE hardware sqrt, MPFR, cpp_bin_float
+template <boost::multiprecision::expression_template_option Templates>
+struct has_correct_sqrt<boost::multiprecision::number<boost::multiprecision::backends::float128_backend, Templates>>
+    : std::false_type {};
+
+// sqrt(x) rounded to nearest. Where T's own sqrt is only faithful (within an
+// ulp), its result r is moved to a neighbour while x lies beyond the square of
+// the midpoint between them: the sign of x - (r -+ h)^2 = x - r^2 -+ 2 r h - h^2
+// (2h the gap to the neighbour) is the sign of an exact sum (r^2 by two_prod;
+// r h and h^2 are exact, h being a power of two). A root is never a midpoint,
+// so there are no ties.
+template <class T>
+T square_root(const T& x) {
+  using std::sqrt;
+  T root = sqrt(x);
+  if constexpr (!has_correct_sqrt<T>::value) {
+    using std::isfinite;
+    if (!(x > 0) || !isfinite(x)) return root;
+    for (int step = 0; step < 2; ++step) {
+      const auto square = two_prod(root, root);
+      const T above = next_up(root), below = next_down(root);
+      const T half_up = (above - root) / 2, half_down = (root - below) / 2;
+      const T beyond_upper_midpoint[5] = {x, -square.high, -square.low, T(-2 * root * half_up), T(-half_up * half_up)};
+      const T below_lower_midpoint[5] = {x, -square.high, -square.low, T(2 * root * half_down), T(-half_down * half_down)};
+      if (sign_of_exact_sum(beyond_upper_midpoint) > 0) root = above;
+      else if (sign_of_exact_sum(below_lower_midpoint) < 0) root = below;
+      else break;
+    }
+  }
+  return root;
+}
+
+// binary32 and binary64 values as ordered integers (-0 and +0 both map to 0),
+// so that k representable values apart is k integers apart.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+std::int64_t ordered_key(T x) {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
+  const bits b = std::bit_cast<bits>(x);
+  return (b & sign) ? -std::int64_t(b & ~sign) : std::int64_t(b);
+}
+
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+T from_ordered_key(std::int64_t k) {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
+  return std::bit_cast<T>(k >= 0 ? bits(k) : bits(sign | bits(-k)));
+}
+
+// x moved by k representable values of T (through zero if need be),
+// saturating at -+ the largest finite value: a finite x stays finite.
+template <class T>
+T ulp_steps(const T& x, long k) {
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    const std::int64_t largest = ordered_key((std::numeric_limits<T>::max)());
+    std::int64_t key = ordered_key(x) + k;
+    key = key > largest ? largest : (key < -largest ? -largest : key);
+    return from_ordered_key<T>(key);
+  } else {
+    const T largest = (std::numeric_limits<T>::max)();
+    T y = x;
+    for (; k > 0 && y < largest; --k) y = next_up(y);
+    for (; k < 0 && y > -largest; ++k) y = next_down(y);
+    return y;
+  }
 }
 
 }  // namespace contact::detail

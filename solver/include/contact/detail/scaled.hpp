@@ -7,8 +7,11 @@
 // relative to the larger term) and (b) at the end, in the conversion back to T.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
+#include <limits>
 
 #include "float_tools.hpp"
 
@@ -77,29 +80,19 @@ struct scaled {
                       c.exponent);
   }
 
-  friend scaled sqrt(const scaled& a) {
-    using std::sqrt;
-    if (a.significand <= 0) return normalized(sqrt(a.significand), 0);
+  // rounded to nearest (square_root of float_tools.hpp)
+  friend scaled square_root(const scaled& a) {
+    if (a.significand <= 0) return normalized(detail::square_root(a.significand), 0);
     // an even exponent halves exactly; the significand moves into [0.25, 1)
     bool odd = (a.exponent % 2) != 0;
     T m = odd ? a.significand / 2 : a.significand;
     long e = odd ? a.exponent + 1 : a.exponent;
-    return normalized(sqrt(m), e / 2);
+    return normalized(detail::square_root(m), e / 2);
   }
 
  private:
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
 };
-
-}  // namespace contact::detail
-
-#include <algorithm>
-#include <array>
-#include <limits>
-
-#include "float_tools.hpp"
-
-namespace contact::detail {
 
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
 // by exponent and cut into clusters wherever two neighbours lie more than
