@@ -24,6 +24,23 @@ TEST(Neighbours, StepOneUlpAndSaturateAtTheEndsOfTheRangeInFloat) { expect_neigh
 
 TEST(Neighbours, StepOneUlpAndSaturateAtTheEndsOfTheRangeInDouble) { expect_neighbours_saturate<double>(); }
 
+// ulp_steps moves by k representable values, through zero, and stops at the
+// largest finite value: a finite input stays finite.
+template <class T>
+void expect_ulp_steps_count_and_saturate() {
+  const T big = (std::numeric_limits<T>::max)(), tiny = std::numeric_limits<T>::denorm_min();
+  EXPECT_EQ(detail::ulp_steps(T(1), 3), detail::next_up(detail::next_up(detail::next_up(T(1)))));
+  EXPECT_EQ(detail::ulp_steps(T(1), -1), detail::next_down(T(1)));
+  EXPECT_EQ(detail::ulp_steps(T(0), 2), T(2 * tiny));
+  EXPECT_EQ(detail::ulp_steps(tiny, -2), T(-tiny));
+  EXPECT_EQ(detail::ulp_steps(detail::next_down(big), 5), big);
+  EXPECT_EQ(detail::ulp_steps(T(-detail::next_down(big)), -5), -big);
+}
+
+TEST(Neighbours, UlpStepsCountAndSaturateInDouble) { expect_ulp_steps_count_and_saturate<double>(); }
+TEST(Neighbours, UlpStepsCountAndSaturateInFloat) { expect_ulp_steps_count_and_saturate<float>(); }
+TEST(Neighbours, UlpStepsCountAndSaturateInFloat128) { expect_ulp_steps_count_and_saturate<float128>(); }
+
 // Doubles whose products, quotients and sums of two or three stay normal.
 rc::Gen<double> moderate() {
   return generator([](auto& source) { return harness::random_sign(source, harness::log_uniform<double>(source, -300, 300)); });
@@ -139,6 +156,15 @@ TEST(SquareRoot, Float128LibrarySqrtIsNotAlwaysCorrectlyRounded) {
     EXPECT_EQ(detail::square_root(float128(x * x)), x);
   }
   EXPECT_GT(off, 0) << "sqrtq rounded every square root correctly: square_root's correction may no longer be needed";
+}
+
+TEST(SquareRoot, Float128SpecialValuesPassThrough) {
+  const float128 infinity = std::numeric_limits<float128>::infinity();
+  using boost::multiprecision::isnan;
+  EXPECT_EQ(detail::square_root(float128(0)), 0);
+  EXPECT_EQ(detail::square_root(infinity), infinity);
+  EXPECT_TRUE(isnan(detail::square_root(float128(-1))));
+  EXPECT_TRUE(isnan(detail::square_root(std::numeric_limits<float128>::quiet_NaN())));
 }
 
 }  // namespace

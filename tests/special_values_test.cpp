@@ -73,6 +73,15 @@ TEST(Cases, EachCaseNamesItsEquation) {
   EXPECT_EQ(equation_of(contact_case::invalid), "invalid");
 }
 
+TEST(Cases, EachCaseHasItsName) {
+  EXPECT_EQ(name_of(contact_case::free), "free");
+  EXPECT_EQ(name_of(contact_case::impact), "impact");
+  EXPECT_EQ(name_of(contact_case::contact), "contact");
+  EXPECT_EQ(name_of(contact_case::release), "release");
+  EXPECT_EQ(name_of(contact_case::invalid), "invalid");
+  EXPECT_EQ(std::size(valid_cases), 4u);
+}
+
 TEST(Cases, AnInvalidResultLiesOnNoSide) {
   EXPECT_FALSE(lies_on_its_side(contact_case::invalid, 0.0, 0.0));
   EXPECT_FALSE(lies_on_its_side(contact_case::invalid, nan, 1.0));
@@ -82,9 +91,12 @@ TEST(Types, EveryNamedTypeDispatchesAndAnUnknownNameDoesNot) {
   int called = 0;
   const auto count_call = [&](auto) { ++called; };
   for (auto name : type_names) EXPECT_TRUE(with_type(name, count_call)) << name;
-  EXPECT_EQ(called, 7);
+  EXPECT_EQ(called, int(type_names.size()));
   EXPECT_FALSE(with_type("half", count_call));
-  EXPECT_EQ(called, 7);
+  EXPECT_EQ(called, int(type_names.size()));
+  int visited = 0;
+  for_each_type([&](auto zero) { EXPECT_EQ(type_name<decltype(zero)>, type_names[visited++]); });
+  EXPECT_EQ(visited, int(type_names.size()));
 }
 
 // Inputs that broke an earlier version or sit on a knife edge (hex, exact).

@@ -1,7 +1,10 @@
-// The input families: generators that draw (u, dy, phi) triples in double.
-// Every type of a run solves the same doubles (each converts exactly).
+// The input generators a scene names: the harness's input families
+// (contact/harness/families.hpp) with the names, parameters and summaries of
+// the scene grammar. Every draw is in double; every type of a run solves the
+// same doubles (each converts exactly).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -11,9 +14,11 @@ namespace report {
 
 struct generator_info {
   std::string name;
-  std::vector<std::string> required, optional;
+  std::vector<std::string> required, optional;  // parameters: distributions, by name
   bool needs_ulps = false;
   std::string summary;  // one line for report.md
+  // One input, drawn by the harness family with the family's parameters.
+  contact::harness::input<double> (*draw)(contact::harness::seeded_source& source, const family& f);
 };
 
 const std::vector<generator_info>& generators();

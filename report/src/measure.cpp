@@ -3,9 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
 
@@ -13,27 +15,9 @@
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
-#include "typed.hpp"
+#include "type_ops.hpp"
 
 namespace report {
-
-const type_ops& ops_float();
-const type_ops& ops_double();
-const type_ops& ops_long_double();
-const type_ops& ops_float128();
-const type_ops& ops_bin_float_50();
-const type_ops& ops_bin_float_100();
-const type_ops& ops_mpfr();
-
-const type_ops& ops_for(const std::string& type) {
-  if (type == "float") return ops_float();
-  if (type == "double") return ops_double();
-  if (type == "long_double") return ops_long_double();
-  if (type == "float128") return ops_float128();
-  if (type == "cpp_bin_float_50") return ops_bin_float_50();
-  if (type == "cpp_bin_float_100") return ops_bin_float_100();
-  return ops_mpfr();
-}
 
 namespace {
 
@@ -97,53 +81,58 @@ struct stream_arrays {
   contact::batch_array<int> which;
 };
 
+// The paths the throughput compares, in the order of its tables.
+constexpr const char* throughput_paths[] = {"floor", "batch", "stable", "textbook"};
+
+using lane_path = std::function<void(stream_arrays&, std::size_t)>;
+
+// The memory floor: the same bytes in and out, and no solving.
+void memory_floor(stream_arrays& a, std::size_t n) {
+  const double* __restrict u = a.u.data();
+  const double* __restrict dy = a.dy.data();
+  const double* __restrict phi = a.phi.data();
+  double* __restrict s = a.s.data();
+  int* __restrict which = a.which.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    s[i] = u[i] + dy[i] + phi[i];
+    which[i] = static_cast<int>(dy[i] > 0);
+  }
+}
+
+// A scalar solver over the arrays, one call per lane.
+template <class Solve>
+lane_path each_lane(Solve solve) {
+  return [solve](stream_arrays& a, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto r = solve(a.u[i], a.dy[i], a.phi[i]);
+      a.s[i] = r.s;
+      a.which[i] = static_cast<int>(r.which);
+    }
+  };
+}
+
 void register_throughput(const std::shared_ptr<stream_arrays>& d, const throughput& t, const std::string& prefix,
                          collector& c) {
   const std::size_t n = d->u.size();
+  const lane_path paths[] = {
+      memory_floor,
+      [](stream_arrays& a, std::size_t) { contact::solve_batch(a.u, a.dy, a.phi, a.s, a.which); },
+      each_lane([](double u, double dy, double phi) { return contact::solve_stable(u, dy, phi); }),
+      each_lane([](double u, double dy, double phi) { return contact::solve_textbook(u, dy, phi); }),
+  };
+  static_assert(std::size(paths) == std::size(throughput_paths));
+  for (const char* what : throughput_paths) c.items_per_iteration[prefix + what] = static_cast<long>(n);
   // Repetition-major, as in typed.hpp: each round times every path once.
-  std::vector<std::function<void()>> adds;
-  auto add = [&](const std::string& what, auto body) {
-    c.items_per_iteration[prefix + what] = static_cast<long>(n);
-    adds.push_back([d, n, body, what, prefix, &t] {
-      static int round_counter = 0;
-      const std::string name = prefix + what + "#" + std::to_string(round_counter++);
-      benchmark::RegisterBenchmark(name.c_str(), [d, n, body](benchmark::State& state) {
+  for (int round = 0; round < t.repetitions; ++round)
+    for (std::size_t k = 0; k < std::size(paths); ++k) {
+      const std::string name = prefix + throughput_paths[k] + "#" + std::to_string(round);
+      benchmark::RegisterBenchmark(name.c_str(), [d, n, body = paths[k]](benchmark::State& state) {
         for (auto _ : state) {
           body(*d, n);
           benchmark::ClobberMemory();
         }
       })->Repetitions(1)->MinTime(t.min_time)->MinWarmUpTime(t.min_time / 2)->Unit(benchmark::kNanosecond);
-    });
-  };
-  // The memory floor: the same bytes in and out, and no solving.
-  add("floor", [](stream_arrays& a, std::size_t n) {
-    const double* __restrict u = a.u.data();
-    const double* __restrict dy = a.dy.data();
-    const double* __restrict phi = a.phi.data();
-    double* __restrict s = a.s.data();
-    int* __restrict which = a.which.data();
-    for (std::size_t i = 0; i < n; ++i) {
-      s[i] = u[i] + dy[i] + phi[i];
-      which[i] = static_cast<int>(dy[i] > 0);
     }
-  });
-  add("batch", [](stream_arrays& a, std::size_t) { contact::solve_batch(a.u, a.dy, a.phi, a.s, a.which); });
-  add("stable", [](stream_arrays& a, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto r = contact::solve_stable(a.u[i], a.dy[i], a.phi[i]);
-      a.s[i] = r.s;
-      a.which[i] = static_cast<int>(r.which);
-    }
-  });
-  add("textbook", [](stream_arrays& a, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto r = contact::solve_textbook(a.u[i], a.dy[i], a.phi[i]);
-      a.s[i] = r.s;
-      a.which[i] = static_cast<int>(r.which);
-    }
-  });
-  for (int round = 0; round < t.repetitions; ++round)
-    for (auto& register_one : adds) register_one();
 }
 
 std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
@@ -162,6 +151,128 @@ std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
   return d;
 }
 
+
+bool asks_for(const run& r, check c) { return std::find(r.checks.begin(), r.checks.end(), c) != r.checks.end(); }
+
+// How many inputs of each family fall into each case, by the exact criteria
+// (stable decides them exactly).
+std::vector<family_mix> case_mix(const scene& s, const std::vector<input>& inputs) {
+  std::vector<family_mix> mix(s.families.size());
+  for (const auto& in : inputs)
+    mix[static_cast<std::size_t>(in.family)].cases[static_cast<int>(contact::solve_stable(in.u, in.dy, in.phi).which)]++;
+  return mix;
+}
+
+// The first r.samples inputs of each family (all of them if r.samples < 0).
+std::vector<input> samples_of(const run& r, const scene& s, const std::vector<input>& inputs) {
+  std::vector<input> subset;
+  std::vector<long> taken(s.families.size(), 0);
+  for (const auto& in : inputs)
+    if (r.samples < 0 || taken[static_cast<std::size_t>(in.family)]++ < r.samples) subset.push_back(in);
+  return subset;
+}
+
+// The certified root of every input, at 256 bits or four times the widest type's precision.
+reference_list references_for(const run& r, const scene& s, const std::vector<input>& subset) {
+  int digits = 53;
+  for (const auto& type : r.types) digits = std::max(digits, ops_for(type).digits());
+  const mpfr_prec_t bits = std::max(256, 4 * digits);
+  reference_list references;
+  references.reserve(subset.size());
+  progress bar("scene " + s.name + ": certified references (" + std::to_string(bits) + " bits)",
+               static_cast<long>(subset.size()));
+  long uncertified = 0;
+  for (std::size_t i = 0; i < subset.size(); ++i) {
+    references.push_back(contact::reference::solve<double>(subset[i].u, subset[i].dy, subset[i].phi, bits));
+    if (!references.back().is_certified) ++uncertified;
+    if ((i & 1023) == 0) bar.update(static_cast<long>(i));
+  }
+  if (uncertified)
+    std::fprintf(stderr, "contact-report: warning: %ld references of scene %s are not certified\n", uncertified,
+                 s.name.c_str());
+  return references;
+}
+
+void measure_accuracy(const scene& s, const std::vector<input>& inputs, const measure_options& options,
+                      scene_result& result) {
+  for (const run& r : s.runs) {
+    if (!asks_for(r, check::accuracy)) continue;
+    const std::vector<input> subset = samples_of(r, s, inputs);
+    const reference_list references = references_for(r, s, subset);
+    for (const auto& type : r.types) {
+      progress bar("scene " + s.name + ": accuracy " + type, static_cast<long>(subset.size()));
+      ops_for(type).accuracy(r, subset, references, s.families.size(), options.raw, bar, result.accuracy);
+    }
+  }
+}
+
+// One Google Benchmark per (run, type, method), over a shuffled array of the scene's inputs.
+void measure_timings(const scene& s, const std::vector<input>& inputs, scene_result& result) {
+  collector c;
+  std::vector<std::pair<std::string, timing_result>> registered;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const run& r = s.runs[k];
+    if (!asks_for(r, check::timing)) continue;
+    const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
+    const std::string prefix = s.name + "|" + std::to_string(k) + "|";
+    for (const auto& type : r.types) {
+      ops_for(type).register_timings(r, lanes, prefix);
+      for (method m : r.methods) {
+        const std::string name = prefix + type + "|" + name_of(m);
+        c.items_per_iteration[name] = static_cast<long>(lanes.size());
+        timing_result t;
+        t.type = type;
+        t.algorithm = name_of(m);
+        t.inputs = static_cast<long>(lanes.size());
+        registered.emplace_back(name, t);
+      }
+    }
+  }
+  if (registered.empty()) return;
+  run_benchmarks(c);
+  for (auto& [name, t] : registered) {
+    t.ns = c.ns[name];
+    spread(t.ns, t.median, t.min, t.max);
+    result.timing.push_back(t);
+  }
+}
+
+// Batch throughput against the scalar paths and the memory floor, streamed and in cache.
+void measure_throughput(const scene& s, const std::vector<input>& inputs, scene_result& result) {
+  const throughput& t = *s.batch_throughput;
+  for (int pass = 0; pass < 2; ++pass) {
+    const long lanes = pass == 0 ? t.lanes : t.cache_lanes;
+    collector c;
+    const std::string prefix = s.name + "|throughput|" + std::to_string(lanes) + "|";
+    auto data = stream_data(mixed(inputs, lanes, s.seed + 1000 + static_cast<std::uint64_t>(pass)));
+    register_throughput(data, t, prefix, c);
+    run_benchmarks(c);
+    for (const char* what : throughput_paths) {
+      throughput_result row;
+      row.what = what;
+      row.lanes = lanes;
+      row.ns = c.ns[prefix + what];
+      spread(row.ns, row.median, row.min, row.max);
+      row.gigabytes_per_second = bytes_per_lane / row.median;
+      (pass == 0 ? result.throughput : result.throughput_cache).push_back(row);
+    }
+  }
+}
+
+void simulate_oscillator(const scene& s, scene_result& result) {
+  for (const run& r : s.runs) {
+    if (!asks_for(r, check::energy)) continue;
+    for (const auto& type : r.types)
+      for (method m : r.methods) {
+        const auto start = std::chrono::steady_clock::now();
+        result.energy.push_back(ops_for(type).simulate(*s.energy, m));
+        std::fprintf(stderr, "contact-report: scene %s: oscillator %s %s: max energy error %.3g (%.1f s)\n",
+                     s.name.c_str(), type.c_str(), name_of(m).c_str(), result.energy.back().max_exact,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+  }
+}
+
 }  // namespace
 
 scene_result measure(const scene& s, const measure_options& options) {
@@ -170,110 +281,12 @@ scene_result measure(const scene& s, const measure_options& options) {
   result.s = s;
   contact::mpfr_float::default_precision(static_cast<unsigned>(s.mpfr_digits10));
   std::fprintf(stderr, "contact-report: scene %s (%s)\n", s.name.c_str(), s.file.c_str());
-
   const std::vector<input> inputs = generate(s);
-  result.mix.assign(s.families.size(), family_mix{});
-  for (const auto& in : inputs)
-    result.mix[static_cast<std::size_t>(in.family)].cases[static_cast<int>(contact::solve_stable(in.u, in.dy, in.phi).which)]++;
-
-  // Accuracy, run by run.
-  for (const run& r : s.runs) {
-    if (std::find(r.checks.begin(), r.checks.end(), check::accuracy) == r.checks.end()) continue;
-    std::vector<input> subset;
-    std::vector<long> taken(s.families.size(), 0);
-    for (const auto& in : inputs)
-      if (r.samples < 0 || taken[static_cast<std::size_t>(in.family)]++ < r.samples) subset.push_back(in);
-    int digits = 53;
-    for (const auto& type : r.types) digits = std::max(digits, ops_for(type).digits());
-    const mpfr_prec_t bits = std::max(256, 4 * digits);
-    reference_list references;
-    references.reserve(subset.size());
-    {
-      progress bar("scene " + s.name + ": certified references (" + std::to_string(bits) + " bits)",
-                   static_cast<long>(subset.size()));
-      long uncertified = 0;
-      for (std::size_t i = 0; i < subset.size(); ++i) {
-        references.push_back(contact::reference::solve<double>(subset[i].u, subset[i].dy, subset[i].phi, bits));
-        if (!references.back().is_certified) ++uncertified;
-        if ((i & 1023) == 0) bar.update(static_cast<long>(i));
-      }
-      if (uncertified)
-        std::fprintf(stderr, "contact-report: warning: %ld references of scene %s are not certified\n", uncertified,
-                     s.name.c_str());
-    }
-    for (const auto& type : r.types) {
-      progress bar("scene " + s.name + ": accuracy " + type, static_cast<long>(subset.size()));
-      ops_for(type).accuracy(r, subset, references, s.families.size(), options.raw, bar, result.accuracy);
-    }
-  }
-
-  // Timings: one Google Benchmark per (run, type, method), over a shuffled array of the scene's inputs.
-  {
-    collector c;
-    std::vector<std::pair<std::string, timing_result>> registered;
-    for (std::size_t k = 0; k < s.runs.size(); ++k) {
-      const run& r = s.runs[k];
-      if (std::find(r.checks.begin(), r.checks.end(), check::timing) == r.checks.end()) continue;
-      const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
-      const std::string prefix = s.name + "|" + std::to_string(k) + "|";
-      for (const auto& type : r.types) {
-        ops_for(type).register_timings(r, lanes, prefix);
-        for (method m : r.methods) {
-          const std::string name = prefix + type + "|" + name_of(m);
-          c.items_per_iteration[name] = static_cast<long>(lanes.size());
-          timing_result t;
-          t.type = type;
-          t.algorithm = name_of(m);
-          t.inputs = static_cast<long>(lanes.size());
-          registered.emplace_back(name, t);
-        }
-      }
-    }
-    if (!registered.empty()) {
-      run_benchmarks(c);
-      for (auto& [name, t] : registered) {
-        t.ns = c.ns[name];
-        spread(t.ns, t.median, t.min, t.max);
-        result.timing.push_back(t);
-      }
-    }
-  }
-
-  // Batch throughput against the scalar paths and the memory floor.
-  if (s.batch_throughput) {
-    const throughput& t = *s.batch_throughput;
-    for (int pass = 0; pass < 2; ++pass) {
-      const long lanes = pass == 0 ? t.lanes : t.cache_lanes;
-      collector c;
-      const std::string prefix = s.name + "|throughput|" + std::to_string(lanes) + "|";
-      auto data = stream_data(mixed(inputs, lanes, s.seed + 1000 + static_cast<std::uint64_t>(pass)));
-      register_throughput(data, t, prefix, c);
-      run_benchmarks(c);
-      for (const char* what : {"floor", "batch", "stable", "textbook"}) {
-        throughput_result row;
-        row.what = what;
-        row.lanes = lanes;
-        row.ns = c.ns[prefix + what];
-        spread(row.ns, row.median, row.min, row.max);
-        row.gigabytes_per_second = 36.0 / row.median;
-        (pass == 0 ? result.throughput : result.throughput_cache).push_back(row);
-      }
-    }
-  }
-
-  // The oscillator.
-  for (const run& r : s.runs) {
-    if (std::find(r.checks.begin(), r.checks.end(), check::energy) == r.checks.end()) continue;
-    for (const auto& type : r.types)
-      for (method m : r.methods) {
-        const auto t0 = std::chrono::steady_clock::now();
-        result.energy.push_back(ops_for(type).simulate(*s.energy, m));
-        const auto& e = result.energy.back();
-        std::fprintf(stderr, "contact-report: scene %s: oscillator %s %s: max energy error %.3g (%.1f s)\n",
-                     s.name.c_str(), type.c_str(), name_of(m).c_str(), e.max_exact,
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      }
-  }
+  result.mix = case_mix(s, inputs);
+  measure_accuracy(s, inputs, options, result);
+  measure_timings(s, inputs, result);
+  if (s.batch_throughput) measure_throughput(s, inputs, result);
+  simulate_oscillator(s, result);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fprintf(stderr, "contact-report: scene %s done in %.1f s\n", s.name.c_str(), result.seconds);
   return result;

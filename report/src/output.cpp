@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <iterator>
 #include <set>
 #include <sstream>
 
+#include "contact/cases.hpp"
+#include "contact/types.hpp"
 #include "inputs.hpp"
 
 namespace report {
@@ -66,7 +68,15 @@ std::string csv_number(double x) {
   return buffer;
 }
 
-const char* case_names[] = {"invalid", "free", "impact", "contact", "release"};
+// The headline's tables compare algorithms in double.
+const std::string double_type(contact::type_name<double>);
+
+template <class Names>
+std::string join(const Names& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
+}
 
 const timing_result* timing_of(const scene_result& r, const std::string& type, const std::string& algorithm) {
   for (const auto& t : r.timing)
@@ -123,135 +133,162 @@ std::string plot_link(const std::string& name, const std::vector<std::string>& m
   return "![" + caption + "](plots/" + name + ".png)\n\n[" + caption + " (SVG)](plots/" + name + ".svg)\n\n";
 }
 
-void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, json& headline) {
-  std::vector<std::string> double_algorithms;
+// The algorithms that ran in double in some scene, in the order of all_methods.
+std::vector<std::string> algorithms_in_double(const std::vector<scene_result>& scenes) {
+  std::vector<std::string> out;
   for (method m : all_methods)
     for (const auto& r : scenes)
-      if (accuracy_of(r, "double", name_of(m)) || timing_of(r, "double", name_of(m))) {
-        double_algorithms.push_back(name_of(m));
+      if (accuracy_of(r, double_type, name_of(m)) || timing_of(r, double_type, name_of(m))) {
+        out.push_back(name_of(m));
         break;
       }
+  return out;
+}
+
+// "| algorithm |", one column per scene and the optional last column "| worst |".
+void scene_columns(std::ostream& md, const std::vector<const scene_result*>& scenes, bool worst_column) {
+  md << "| algorithm |";
+  for (const auto* r : scenes) md << " " << r->s.name << " |";
+  md << (worst_column ? " worst |" : "") << "\n|---|";
+  for (std::size_t i = 0; i < scenes.size() + (worst_column ? 1 : 0); ++i) md << "---:|";
+  md << "\n";
+}
+
+void write_double_accuracy(std::ostream& md, const std::vector<std::string>& algorithms,
+                           const std::vector<const scene_result*>& scenes, json& headline) {
+  md << "### Accuracy in double: maximum ulp error against the certified reference\n\n";
+  scene_columns(md, scenes, true);
+  for (const auto& algorithm : algorithms) {
+    md << "| " << algorithm << " |";
+    double worst = -1;
+    json per_scene = json::object();
+    for (const auto* r : scenes) {
+      const auto* a = accuracy_of(*r, double_type, algorithm);
+      md << " " << (a ? format_ulp(a->ulps.max) : "—") << " |";
+      if (a) {
+        worst = std::max(worst, a->ulps.max);
+        per_scene[r->s.name] = number(a->ulps.max);
+      }
+    }
+    md << " **" << format_ulp(worst) << "** |\n";
+    headline["double_max_ulp"][algorithm] = {{"worst", number(worst)}, {"per_scene", per_scene}};
+  }
+  md << "\n";
+}
+
+void write_double_speed(std::ostream& md, const std::vector<std::string>& algorithms,
+                        const std::vector<const scene_result*>& scenes, json& headline) {
+  md << "### Speed in double: ns per solve (median over repetitions, CPU time)\n\n";
+  scene_columns(md, scenes, false);
+  for (const auto& algorithm : algorithms) {
+    md << "| " << algorithm << " |";
+    json per_scene = json::object();
+    for (const auto* r : scenes) {
+      const auto* t = timing_of(*r, double_type, algorithm);
+      md << " " << (t ? format_ns(t->median) : "—") << " |";
+      if (t) per_scene[r->s.name] = number(t->median);
+    }
+    md << "\n";
+    headline["double_ns_per_solve"][algorithm] = per_scene;
+  }
+  md << "\n";
+}
+
+// The stable form in every other registered type that some scene ran it in.
+void write_stable_by_type(std::ostream& md, const std::vector<const scene_result*>& scenes, json& headline) {
+  const std::string stable = name_of(method::stable);
+  std::vector<std::string> types;
+  for (std::string_view name : contact::type_names) {
+    const std::string type(name);
+    if (type == double_type) continue;
+    for (const auto* r : scenes)
+      if (accuracy_of(*r, type, stable) || timing_of(*r, type, stable)) {
+        types.push_back(type);
+        break;
+      }
+  }
+  if (types.empty()) return;
+  md << "### What each precision costs: the stable form\n\n"
+        "Worst maximum error over the scenes, in ulps of the type itself and after rounding the result to "
+        "double; ns per solve in each scene.\n\n| type | max ulp (own) | max ulp as double |";
+  for (const auto* r : scenes) md << " ns " << r->s.name << " |";
+  md << "\n|---|---:|---:|";
+  for (std::size_t i = 0; i < scenes.size(); ++i) md << "---:|";
+  md << "\n";
+  for (const auto& type : types) {
+    double worst = -1, worst_double = -1;
+    json ns = json::object();
+    std::string cells;
+    for (const auto* r : scenes) {
+      if (const auto* a = accuracy_of(*r, type, stable)) {
+        worst = std::max(worst, a->ulps.max);
+        worst_double = std::max(worst_double, a->max_ulp_as_double);
+      }
+      const auto* t = timing_of(*r, type, stable);
+      cells += " " + (t ? format_ns(t->median) : std::string("—")) + " |";
+      if (t) ns[r->s.name] = number(t->median);
+    }
+    md << "| " << type << " | " << format_ulp(worst) << " | " << format_ulp(worst_double) << " |" << cells << "\n";
+    headline["stable_by_type"][type] = {
+        {"max_ulp", number(worst)}, {"max_ulp_as_double", number(worst_double)}, {"ns_per_solve", ns}};
+  }
+  md << "\n";
+}
+
+void write_batch_headline(std::ostream& md, const scene_result& r, json& headline) {
+  md << "### Batch throughput (scene " << r.s.name << ", double, mixed cases)\n\n"
+     << "| lanes | floor ns/lane | batch | stable | textbook | batch speed-up over textbook | over stable | batch / floor |\n"
+     << "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto* rows : {&r.throughput, &r.throughput_cache}) {
+    const auto *floor = throughput_of(*rows, "floor"), *batch = throughput_of(*rows, "batch"),
+               *stable = throughput_of(*rows, "stable"), *textbook = throughput_of(*rows, "textbook");
+    if (!floor || !batch || !stable || !textbook) continue;
+    const bool streamed = rows == &r.throughput;
+    md << "| " << floor->lanes << (streamed ? " (streamed)" : " (in cache)") << " | " << format_ns(floor->median)
+       << " | " << format_ns(batch->median) << " | " << format_ns(stable->median) << " | "
+       << format_ns(textbook->median) << " | **" << format_ratio(textbook->median / batch->median) << "** | "
+       << format_ratio(stable->median / batch->median) << " | **" << format_ratio(batch->median / floor->median)
+       << "** |\n";
+    headline["batch"][streamed ? "streamed" : "in_cache"] = {
+        {"scene", r.s.name},
+        {"lanes", floor->lanes},
+        {"floor_ns", number(floor->median)},
+        {"batch_ns", number(batch->median)},
+        {"stable_ns", number(stable->median)},
+        {"textbook_ns", number(textbook->median)},
+        {"speedup_over_textbook", number(textbook->median / batch->median)},
+        {"speedup_over_stable", number(stable->median / batch->median)},
+        {"batch_to_floor", number(batch->median / floor->median)}};
+  }
+  md << "\nThe targets: batch at least 8 times faster than scalar textbook on mixed-case data, and within 1.5 "
+        "times the floor (the streamed row). The in-cache row repeats a short array, whose branches a branch "
+        "predictor partly learns by heart: it flatters the scalar paths.\n\n";
+}
+
+void write_energy_headline(std::ostream& md, const scene_result& r, json& headline) {
+  md << "### Energy conservation (scene " << r.s.name << "): maximum relative energy error\n\n"
+     << "| type | algorithm | max abs(H[n] - H[0]) / H[0] |\n|---|---|---:|\n";
+  for (const auto& e : r.energy) {
+    md << "| " << e.type << " | " << e.algorithm << " | " << format_energy(e.max_exact) << " |\n";
+    headline["energy"][e.type][e.algorithm] = number(e.max_exact);
+  }
+  md << "\n";
+}
+
+void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, json& headline) {
   std::vector<const scene_result*> with_runs;
   for (const auto& r : scenes)
     if (!r.accuracy.empty() || !r.timing.empty()) with_runs.push_back(&r);
-
-  if (!double_algorithms.empty() && !with_runs.empty()) {
-    md << "### Accuracy in double: maximum ulp error against the certified reference\n\n| algorithm |";
-    for (const auto* r : with_runs) md << " " << r->s.name << " |";
-    md << " worst |\n|---|";
-    for (std::size_t i = 0; i <= with_runs.size(); ++i) md << "---:|";
-    md << "\n";
-    for (const auto& algorithm : double_algorithms) {
-      md << "| " << algorithm << " |";
-      double worst = -1;
-      json per_scene = json::object();
-      for (const auto* r : with_runs) {
-        const auto* a = accuracy_of(*r, "double", algorithm);
-        md << " " << (a ? format_ulp(a->ulps.max) : "—") << " |";
-        if (a) {
-          worst = std::max(worst, a->ulps.max);
-          per_scene[r->s.name] = number(a->ulps.max);
-        }
-      }
-      md << " **" << format_ulp(worst) << "** |\n";
-      headline["double_max_ulp"][algorithm] = {{"worst", number(worst)}, {"per_scene", per_scene}};
-    }
-    md << "\n### Speed in double: ns per solve (median over repetitions, CPU time)\n\n| algorithm |";
-    for (const auto* r : with_runs) md << " " << r->s.name << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < with_runs.size(); ++i) md << "---:|";
-    md << "\n";
-    for (const auto& algorithm : double_algorithms) {
-      md << "| " << algorithm << " |";
-      json per_scene = json::object();
-      for (const auto* r : with_runs) {
-        const auto* t = timing_of(*r, "double", algorithm);
-        md << " " << (t ? format_ns(t->median) : "—") << " |";
-        if (t) per_scene[r->s.name] = number(t->median);
-      }
-      md << "\n";
-      headline["double_ns_per_solve"][algorithm] = per_scene;
-    }
-    md << "\n";
+  const std::vector<std::string> algorithms = algorithms_in_double(scenes);
+  if (!algorithms.empty() && !with_runs.empty()) {
+    write_double_accuracy(md, algorithms, with_runs, headline);
+    write_double_speed(md, algorithms, with_runs, headline);
   }
-
-  // Wider types: the stable form in each precision.
-  std::vector<std::string> wide;
-  for (const auto& type : type_names)
-    if (type != "double")
-      for (const auto* r : with_runs)
-        if (accuracy_of(*r, type, "stable") || timing_of(*r, type, "stable")) {
-          wide.push_back(type);
-          break;
-        }
-  if (!wide.empty()) {
-    md << "### What each precision costs: the stable form\n\n"
-          "Worst maximum error over the scenes, in ulps of the type itself and after rounding the result to "
-          "double; ns per solve in each scene.\n\n| type | max ulp (own) | max ulp as double |";
-    for (const auto* r : with_runs) md << " ns " << r->s.name << " |";
-    md << "\n|---|---:|---:|";
-    for (std::size_t i = 0; i < with_runs.size(); ++i) md << "---:|";
-    md << "\n";
-    for (const auto& type : wide) {
-      double worst = -1, worst_double = -1;
-      json ns = json::object();
-      std::string cells;
-      for (const auto* r : with_runs) {
-        if (const auto* a = accuracy_of(*r, type, "stable")) {
-          worst = std::max(worst, a->ulps.max);
-          worst_double = std::max(worst_double, a->max_ulp_as_double);
-        }
-        const auto* t = timing_of(*r, type, "stable");
-        cells += " " + (t ? format_ns(t->median) : std::string("—")) + " |";
-        if (t) ns[r->s.name] = number(t->median);
-      }
-      md << "| " << type << " | " << format_ulp(worst) << " | " << format_ulp(worst_double) << " |" << cells << "\n";
-      headline["stable_by_type"][type] = {
-          {"max_ulp", number(worst)}, {"max_ulp_as_double", number(worst_double)}, {"ns_per_solve", ns}};
-    }
-    md << "\n";
-  }
-
-  for (const auto& r : scenes) {
-    if (r.throughput.empty()) continue;
-    md << "### Batch throughput (scene " << r.s.name << ", double, mixed cases)\n\n"
-       << "| lanes | floor ns/lane | batch | stable | textbook | batch speed-up over textbook | over stable | batch / floor |\n"
-       << "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const auto* rows : {&r.throughput, &r.throughput_cache}) {
-      const auto *floor = throughput_of(*rows, "floor"), *batch = throughput_of(*rows, "batch"),
-                 *stable = throughput_of(*rows, "stable"), *textbook = throughput_of(*rows, "textbook");
-      if (!floor || !batch || !stable || !textbook) continue;
-      md << "| " << floor->lanes << (rows == &r.throughput ? " (streamed)" : " (in cache)") << " | "
-         << format_ns(floor->median) << " | " << format_ns(batch->median) << " | "
-         << format_ns(stable->median) << " | " << format_ns(textbook->median) << " | **"
-         << format_ratio(textbook->median / batch->median) << "** | " << format_ratio(stable->median / batch->median)
-         << " | **" << format_ratio(batch->median / floor->median) << "** |\n";
-      headline["batch"][rows == &r.throughput ? "streamed" : "in_cache"] = {
-          {"scene", r.s.name},
-          {"lanes", floor->lanes},
-          {"floor_ns", number(floor->median)},
-          {"batch_ns", number(batch->median)},
-          {"stable_ns", number(stable->median)},
-          {"textbook_ns", number(textbook->median)},
-          {"speedup_over_textbook", number(textbook->median / batch->median)},
-          {"speedup_over_stable", number(stable->median / batch->median)},
-          {"batch_to_floor", number(batch->median / floor->median)}};
-    }
-    md << "\nTargets of issue 5: batch at least 8 times faster than scalar textbook on mixed-case data, and within 1.5 "
-          "times the floor (the streamed row). The in-cache row repeats a short array, whose branches a branch "
-          "predictor partly learns by heart: it flatters the scalar paths.\n\n";
-  }
-
-  for (const auto& r : scenes) {
-    if (r.energy.empty()) continue;
-    md << "### Energy conservation (scene " << r.s.name << "): maximum relative energy error\n\n"
-       << "| type | algorithm | max abs(H[n] - H[0]) / H[0] |\n|---|---|---:|\n";
-    for (const auto& e : r.energy) {
-      md << "| " << e.type << " | " << e.algorithm << " | " << format_energy(e.max_exact) << " |\n";
-      headline["energy"][e.type][e.algorithm] = number(e.max_exact);
-    }
-    md << "\n";
-  }
+  write_stable_by_type(md, with_runs, headline);
+  for (const auto& r : scenes)
+    if (!r.throughput.empty()) write_batch_headline(md, r, headline);
+  for (const auto& r : scenes)
+    if (!r.energy.empty()) write_energy_headline(md, r, headline);
 }
 
 void write_method(std::ostream& md, const run_info& info) {
@@ -281,13 +318,107 @@ void write_method(std::ostream& md, const run_info& info) {
         "replaces); **textbook** is the appendix's summary with its misprints corrected and nothing else; **stable** "
         "is `contact::solve_stable`; **batch** is `contact::solve_batch` (`contact/batch.hpp`), whose results equal "
         "stable's bit for bit (tested).\n"
-        "- **Wider types** (long double, float128, cpp_bin_float_50/100, mpfr) run the stable form; mpfr at the "
-        "scene's `mpfr_digits10` decimal digits.\n"
-        "- **Energy.** The oscillator of context.md (mass, spring, one-sided barrier, discrete-gradient midpoint "
+        "- **Types.** The registered scalar types of `contact/types.hpp` ("
+     << join(contact::type_names)
+     << "); each scene says which algorithms run in which of them, "
+     << contact::type_name<contact::mpfr_float>
+     << " at the scene's `mpfr_digits10` decimal digits.\n"
+        "- **Energy.** The oscillator of docs/equations.md, section 1 (mass, spring, one-sided barrier, "
+        "discrete-gradient midpoint "
         "scheme, dt = 1/sample rate) is stepped in each type with each algorithm; H is evaluated exactly (MPFR) from "
         "the parameters and state as the type holds them, so the figure is the drift of the simulation, not the "
         "rounding of H. The energy error with H evaluated in the type itself is in results.csv/json.\n"
         "- **Build.** " << info.compiler << ", flags `" << info.flags << "` for every algorithm alike.\n\n";
+}
+
+// The families and how their inputs fall into the cases.
+void write_families(std::ostream& md, const scene_result& r) {
+  md << "| family | generator | samples | parameters |";
+  for (contact::contact_case c : contact::valid_cases) md << " " << contact::name_of(c) << " |";
+  md << "\n|---|---|---:|---|";
+  for (std::size_t c = 0; c < std::size(contact::valid_cases); ++c) md << "---:|";
+  md << "\n";
+  for (std::size_t i = 0; i < r.s.families.size(); ++i) {
+    const auto& f = r.s.families[i];
+    md << "| " << f.name << " | " << f.generator << " | " << f.samples << " | " << parameters_of(f) << " |";
+    for (contact::contact_case c : contact::valid_cases) md << " " << r.mix[i].cases[static_cast<int>(c)] << " |";
+    md << "\n";
+  }
+  md << "\nCases by the exact criteria.\n\n";
+}
+
+// One row per (type, algorithm): accuracy and timing side by side.
+void write_results(std::ostream& md, const scene_result& r,
+                   const std::vector<std::pair<std::string, std::string>>& rows) {
+  bool as_double = false;
+  for (const auto& a : r.accuracy) as_double = as_double || a.max_ulp_as_double >= 0;
+  md << "| type | algorithm | samples | max ulp | p99 ulp | median ulp |" << (as_double ? " max ulp as double |" : "")
+     << " NaN | inf | compl. | wrong case | ns/solve | spread | inputs × reps |\n|---|---|---:|---:|---:|---:|"
+     << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---|---:|\n";
+  for (const auto& [type, algorithm] : rows) {
+    const auto* a = accuracy_of(r, type, algorithm);
+    const auto* t = timing_of(r, type, algorithm);
+    md << "| " << type << " | " << algorithm << " | ";
+    if (a) {
+      md << a->samples << " | " << format_ulp(a->ulps.max) << " | " << format_ulp(a->ulps.p99) << " | "
+         << format_ulp(a->ulps.median) << " | ";
+      if (as_double) md << format_ulp(a->max_ulp_as_double) << " | ";
+      md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | ";
+    } else {
+      md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | ";
+    }
+    if (t && !t->ns.empty())
+      md << format_ns(t->median) << " | " << format_ns(t->min) << "–" << format_ns(t->max) << " | " << t->inputs << " × "
+         << t->ns.size() << " |\n";
+    else
+      md << "— | — | — |\n";
+  }
+  md << "\n";
+}
+
+void write_family_max(std::ostream& md, const scene_result& r) {
+  md << "Maximum ulp error by family:\n\n| type | algorithm |";
+  for (const auto& f : r.s.families) md << " " << f.name << " |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < r.s.families.size(); ++i) md << "---:|";
+  md << "\n";
+  for (const auto& a : r.accuracy) {
+    md << "| " << a.type << " | " << a.algorithm << " |";
+    for (double v : a.family_max) md << " " << format_ulp(v) << " |";
+    md << "\n";
+  }
+  md << "\n";
+}
+
+void write_throughput(std::ostream& md, const scene_result& r) {
+  md << "Batch throughput (double, mixed cases; ns per lane, median of " << r.s.batch_throughput->repetitions
+     << " repetitions, spread min–max; " << bytes_per_lane << " bytes per lane):\n\n"
+     << "| lanes | path | ns/lane | spread | GB/s |\n|---:|---|---:|---|---:|\n";
+  for (const auto* rows : {&r.throughput, &r.throughput_cache})
+    for (const auto& t : *rows)
+      md << "| " << t.lanes << " | " << t.what << " | " << format_ns(t.median) << " | " << format_ns(t.min) << "–"
+         << format_ns(t.max) << " | " << format_ratio(t.gigabytes_per_second) << " |\n";
+  md << "\nThe floor streams the same bytes (reads u, dy, phi; writes s and the case) and solves nothing.\n\n";
+}
+
+void write_energy(std::ostream& md, const scene_result& r, const std::vector<std::string>& plots) {
+  const scene& s = r.s;
+  const oscillator& o = *s.energy;
+  md << "Oscillator: m = " << o.mass << " kg, K = " << o.spring << " N/m, barrier at h_b = " << o.barrier_height
+     << " m with k_b = " << o.barrier_stiffness << " N/m, sample rate " << o.sample_rate << " Hz, " << o.duration
+     << " s (" << r.energy.front().steps << " steps), y0 = " << o.initial_displacement << " m, v0 = "
+     << o.initial_velocity << " m/s.\n\n"
+     << "| type | algorithm | steps in contact | max rel. energy error (exact H) | final | max with H in the type |\n"
+        "|---|---|---:|---:|---:|---:|\n";
+  for (const auto& e : r.energy)
+    md << "| " << e.type << " | " << e.algorithm << " | " << e.contact_steps << " | " << format_energy(e.max_exact)
+       << " | " << format_energy(e.final_exact) << " | " << format_energy(e.max_in_type) << " |\n";
+  md << "\n";
+  std::set<std::string> types;
+  for (const auto& e : r.energy) types.insert(e.type);
+  for (const auto& type : types)
+    md << plot_link("energy_" + s.name + "_" + type, plots, "Relative energy error, " + type + ", scene " + s.name);
+  md << plot_link("energy_" + s.name + "_types", plots, "Relative energy error of the stable form by type, scene " + s.name);
 }
 
 void write_scene(std::ostream& md, const scene_result& r, const std::vector<std::string>& plots) {
@@ -297,86 +428,14 @@ void write_scene(std::ostream& md, const scene_result& r, const std::vector<std:
      << format_ratio(r.seconds) << " s.";
   if (!s.description.empty()) md << " " << s.description;
   md << "\n\n";
-  if (!s.families.empty()) {
-    md << "| family | generator | samples | parameters | free | impact | contact | release |\n"
-          "|---|---|---:|---|---:|---:|---:|---:|\n";
-    for (std::size_t i = 0; i < s.families.size(); ++i) {
-      const auto& f = s.families[i];
-      md << "| " << f.name << " | " << f.generator << " | " << f.samples << " | " << parameters_of(f) << " |";
-      for (int c = 1; c <= 4; ++c) md << " " << r.mix[i].cases[c] << " |";
-      md << "\n";
-    }
-    md << "\nCases by the exact criteria.\n\n";
-  }
-  const auto rows = rows_of(r);
-  if (!rows.empty()) {
-    bool as_double = false;
-    for (const auto& a : r.accuracy) as_double = as_double || a.max_ulp_as_double >= 0;
-    md << "| type | algorithm | samples | max ulp | p99 ulp | median ulp |" << (as_double ? " max ulp as double |" : "")
-       << " NaN | inf | compl. | wrong case | ns/solve | spread | inputs × reps |\n|---|---|---:|---:|---:|---:|"
-       << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---|---:|\n";
-    for (const auto& [type, algorithm] : rows) {
-      const auto* a = accuracy_of(r, type, algorithm);
-      const auto* t = timing_of(r, type, algorithm);
-      md << "| " << type << " | " << algorithm << " | ";
-      if (a) {
-        md << a->samples << " | " << format_ulp(a->ulps.max) << " | " << format_ulp(a->ulps.p99) << " | "
-           << format_ulp(a->ulps.median) << " | ";
-        if (as_double) md << format_ulp(a->max_ulp_as_double) << " | ";
-        md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | ";
-      } else {
-        md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | ";
-      }
-      if (t && !t->ns.empty())
-        md << format_ns(t->median) << " | " << format_ns(t->min) << "–" << format_ns(t->max) << " | " << t->inputs << " × "
-           << t->ns.size() << " |\n";
-      else
-        md << "— | — | — |\n";
-    }
-    md << "\n";
-    if (!r.accuracy.empty() && s.families.size() > 1) {
-      md << "Maximum ulp error by family:\n\n| type | algorithm |";
-      for (const auto& f : s.families) md << " " << f.name << " |";
-      md << "\n|---|---|";
-      for (std::size_t i = 0; i < s.families.size(); ++i) md << "---:|";
-      md << "\n";
-      for (const auto& a : r.accuracy) {
-        md << "| " << a.type << " | " << a.algorithm << " |";
-        for (double v : a.family_max) md << " " << format_ulp(v) << " |";
-        md << "\n";
-      }
-      md << "\n";
-    }
+  if (!s.families.empty()) write_families(md, r);
+  if (const auto rows = rows_of(r); !rows.empty()) {
+    write_results(md, r, rows);
+    if (!r.accuracy.empty() && s.families.size() > 1) write_family_max(md, r);
     md << plot_link("pareto_" + s.name, plots, "Error against run time, scene " + s.name);
   }
-  if (!r.throughput.empty()) {
-    md << "Batch throughput (double, mixed cases; ns per lane, median of " << s.batch_throughput->repetitions
-       << " repetitions, spread min–max; 36 bytes per lane):\n\n"
-          "| lanes | path | ns/lane | spread | GB/s |\n|---:|---|---:|---|---:|\n";
-    for (const auto* rows : {&r.throughput, &r.throughput_cache})
-      for (const auto& t : *rows)
-        md << "| " << t.lanes << " | " << t.what << " | " << format_ns(t.median) << " | " << format_ns(t.min) << "–"
-           << format_ns(t.max) << " | " << format_ratio(t.gigabytes_per_second) << " |\n";
-    md << "\nThe floor streams the same bytes (reads u, dy, phi; writes s and the case) and solves nothing.\n\n";
-  }
-  if (!r.energy.empty()) {
-    const oscillator& o = *s.energy;
-    md << "Oscillator: m = " << o.mass << " kg, K = " << o.spring << " N/m, barrier at h_b = " << o.barrier_height
-       << " m with k_b = " << o.barrier_stiffness << " N/m, sample rate " << o.sample_rate << " Hz, " << o.duration
-       << " s (" << r.energy.front().steps << " steps), y0 = " << o.initial_displacement << " m, v0 = "
-       << o.initial_velocity << " m/s.\n\n"
-       << "| type | algorithm | steps in contact | max rel. energy error (exact H) | final | max with H in the type |\n"
-          "|---|---|---:|---:|---:|---:|\n";
-    for (const auto& e : r.energy)
-      md << "| " << e.type << " | " << e.algorithm << " | " << e.contact_steps << " | " << format_energy(e.max_exact)
-         << " | " << format_energy(e.final_exact) << " | " << format_energy(e.max_in_type) << " |\n";
-    md << "\n";
-    std::set<std::string> types;
-    for (const auto& e : r.energy) types.insert(e.type);
-    for (const auto& type : types)
-      md << plot_link("energy_" + s.name + "_" + type, plots, "Relative energy error, " + type + ", scene " + s.name);
-    md << plot_link("energy_" + s.name + "_types", plots, "Relative energy error of the stable form by type, scene " + s.name);
-  }
+  if (!r.throughput.empty()) write_throughput(md, r);
+  if (!r.energy.empty()) write_energy(md, r, plots);
 }
 
 json scene_json(const scene_result& r) {
@@ -392,7 +451,10 @@ json scene_json(const scene_result& r) {
   for (std::size_t i = 0; i < s.families.size(); ++i) {
     const auto& f = s.families[i];
     json cases;
-    for (int c = 0; c <= 4; ++c) cases[case_names[c]] = r.mix[i].cases[c];
+    cases[std::string(contact::name_of(contact::contact_case::invalid))] =
+        r.mix[i].cases[static_cast<int>(contact::contact_case::invalid)];
+    for (contact::contact_case c : contact::valid_cases)
+      cases[std::string(contact::name_of(c))] = r.mix[i].cases[static_cast<int>(c)];
     j["families"].push_back(
         {{"name", f.name}, {"generator", f.generator}, {"samples", f.samples}, {"parameters", parameters_of(f)}, {"cases", cases}});
   }
@@ -498,10 +560,10 @@ void write_csv(std::ostream& csv, const std::vector<scene_result>& scenes) {
     for (const auto* rows : {&r.throughput, &r.throughput_cache})
       for (const auto& t : *rows) {
         const std::string check = "throughput@" + std::to_string(t.lanes);
-        row(check.c_str(), "double", t.what, "ns_median", csv_number(t.median));
-        row(check.c_str(), "double", t.what, "ns_min", csv_number(t.min));
-        row(check.c_str(), "double", t.what, "ns_max", csv_number(t.max));
-        row(check.c_str(), "double", t.what, "gigabytes_per_second", csv_number(t.gigabytes_per_second));
+        row(check.c_str(), double_type, t.what, "ns_median", csv_number(t.median));
+        row(check.c_str(), double_type, t.what, "ns_min", csv_number(t.min));
+        row(check.c_str(), double_type, t.what, "ns_max", csv_number(t.max));
+        row(check.c_str(), double_type, t.what, "gigabytes_per_second", csv_number(t.gigabytes_per_second));
       }
     for (const auto& e : r.energy) {
       row("energy", e.type, e.algorithm, "steps", std::to_string(e.steps));

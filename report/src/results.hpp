@@ -36,7 +36,7 @@ struct accuracy_result {
   int reference_bits = 0;
   // the raw measurements (kept only with --raw)
   std::vector<double> errors;
-  std::vector<int> family_of, which;
+  std::vector<int> which;
   std::vector<std::string> s_text;
   std::vector<input> inputs;
 };
@@ -48,12 +48,15 @@ struct timing_result {
   double median = 0, min = 0, max = 0;
 };
 
+// What one lane of the batch throughput streams: u, dy and phi in, s and the case out.
+inline constexpr long bytes_per_lane = 4 * sizeof(double) + sizeof(int);
+
 struct throughput_result {
   std::string what;  // floor, batch, stable, textbook
   long lanes = 0;
   std::vector<double> ns;  // ns per lane, one per repetition (CPU time)
   double median = 0, min = 0, max = 0;
-  double gigabytes_per_second = 0;  // 36 bytes per lane (3 doubles in, a double and an int out)
+  double gigabytes_per_second = 0;  // bytes_per_lane / ns per lane
 };
 
 struct energy_result {

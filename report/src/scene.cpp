@@ -9,38 +9,17 @@
 #include <set>
 #include <sstream>
 
+#include "contact/types.hpp"
 #include "inputs.hpp"
 
 namespace report {
 
-std::string name_of(method m) {
-  switch (m) {
-    case method::textbook: return "textbook";
-    case method::stable: return "stable";
-    case method::newton: return "newton";
-    case method::batch: return "batch";
-    case method::boost_quadratic: return "boost_quadratic";
-    default: return "eigen_companion";
-  }
-}
-
-std::optional<method> method_named(const std::string& name) {
-  for (method m : all_methods)
-    if (name_of(m) == name) return m;
-  return std::nullopt;
-}
-
-std::string unsupported(method m, const std::string& type) {
-  if (m == method::eigen_companion && type != "float" && type != "double" && type != "long_double")
-    return "eigen_companion runs in float, double and long_double only (Eigen's EigenSolver on the companion matrix)";
-  return "";
-}
-
 namespace {
 
-std::string join(const std::vector<std::string>& names) {
+template <class Names>
+std::string join(const Names& names) {
   std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
 }
 
@@ -60,8 +39,6 @@ class reader {
              "unknown key '" + std::string(key.str()) + "' in " + where + " (allowed: " + join(allowed) + ")");
     }
   }
-
-  const toml::node* find(const toml::table& table, const std::string& key) const { return table.get(key); }
 
   const toml::node& require(const toml::table& table, const std::string& key, const std::string& where) const {
     const toml::node* node = table.get(key);
@@ -121,8 +98,8 @@ class reader {
     const auto names = strings(node, "types");
     const auto array = node.as_array();
     for (std::size_t i = 0; i < names.size(); ++i)
-      if (std::find(type_names.begin(), type_names.end(), names[i]) == type_names.end())
-        fail((*array)[i], "unknown type '" + names[i] + "' (known: " + join(type_names) + ")");
+      if (std::find(contact::type_names.begin(), contact::type_names.end(), names[i]) == contact::type_names.end())
+        fail((*array)[i], "unknown type '" + names[i] + "' (known: " + join(contact::type_names) + ")");
     return names;
   }
 
@@ -146,7 +123,6 @@ class reader {
 
   distribution parse_distribution(const toml::node& node, const std::string& key) const {
     distribution d;
-    d.line = line_of(node);
     if (node.is_number()) {
       d.kind = distribution::shape::constant;
       d.low = d.high = number(node, key);
@@ -189,7 +165,6 @@ class reader {
       }
     }
     if (shapes != 1) fail(node, "'" + key + "' needs exactly one of log10, log2 or uniform");
-    d.sign = d.kind == distribution::shape::uniform ? 1 : 1;
     if (const toml::node* s = table->get("sign")) {
       if (d.kind == distribution::shape::uniform) fail(*s, "'" + key + "': 'sign' applies to log10 and log2 only");
       const std::string sign = string(*s, "sign");

@@ -9,7 +9,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "contact/harness/random.hpp"
+#include "methods.hpp"
 
 namespace report {
 
@@ -28,30 +32,8 @@ class scene_error : public std::runtime_error {
   std::string reason_;
 };
 
-// How one number of a family is drawn.
-struct distribution {
-  enum class shape { log10, log2, uniform, constant };
-  shape kind = shape::constant;
-  double low = 0, high = 0;  // exponents for log10/log2, bounds for uniform, value for constant
-  int sign = 1;              // +1, -1, or 0 for either sign with equal odds
-  long line = 0;
-};
-
-// The algorithms of the report's tables: the library's three, its batch API
-// and two peers.
-enum class method { textbook, stable, newton, batch, boost_quadratic, eigen_companion };
-inline constexpr method all_methods[] = {method::textbook,        method::stable, method::newton,
-                                         method::batch,           method::boost_quadratic,
-                                         method::eigen_companion};
-std::string name_of(method m);
-std::optional<method> method_named(const std::string& name);
-
-// The number types of contact/types.hpp that the report runs.
-inline const std::vector<std::string> type_names = {"float",           "double",           "long_double",
-                                                    "float128",        "cpp_bin_float_50", "cpp_bin_float_100",
-                                                    "mpfr"};
-// Why the method cannot run in the type, or empty if it can.
-std::string unsupported(method m, const std::string& type);
+// How one number of a family is drawn: the input families' own distribution.
+using contact::harness::distribution;
 
 struct family {
   std::string name;

@@ -1,62 +1,57 @@
-// The measurements that depend on the number type, as templates; each
-// type_*.cpp instantiates them for one type (so that the heavy ones compile in
-// parallel) and hands out a type_ops table of function pointers.
+// The measurements that depend on the scalar type, as templates over T.
+// typed_instance.cpp instantiates them once per registered type (so that the
+// heavy types compile in parallel) and hands out their type_ops table.
 #pragma once
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <functional>
 #include <limits>
-#include <sstream>
+#include <memory>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "contact/batch.hpp"
+#include "contact/harness/oscillator.hpp"
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
 #include "peers.hpp"
 #include "results.hpp"
+#include "type_ops.hpp"
 
-namespace report {
+namespace report::typed {
 
-using reference_list = std::vector<contact::reference::certified>;
+// The type at `index` of the registry.
+template <std::size_t index, class... Ts>
+auto registered_at(contact::type_list<Ts...>) {
+  return std::tuple_element_t<index, std::tuple<Ts...>>{};
+}
+template <std::size_t index>
+using registered = decltype(registered_at<index>(contact::scalar_types{}));
 
-struct type_ops {
-  std::string name;
-  int (*digits)();  // significand bits (MPFR: at the current default precision)
-  // Solves run.samples of `inputs` with each of the run's methods; `references`
-  // are the certified roots of the same inputs.
-  void (*accuracy)(const run& r, const std::vector<input>& inputs, const reference_list& references,
-                   std::size_t families, bool keep_raw, progress& bar, std::vector<accuracy_result>& out);
-  // Registers one Google Benchmark per method, named "<prefix><type>|<method>".
-  void (*register_timings)(const run& r, const std::vector<input>& lanes, const std::string& prefix);
-  energy_result (*simulate)(const oscillator& o, method m);
-};
-
-const type_ops& ops_for(const std::string& type);  // in measure.cpp
-
-namespace typed {
-
+// The library's algorithms through contact::solve; the batch API and the
+// peers are the report's own.
 template <class T>
 contact::solution<T> solve_one(method m, const T& u, const T& dy, const T& phi) {
+  if (const auto algorithm = library_algorithm(m)) return contact::solve(u, dy, phi, *algorithm);
   switch (m) {
-    case method::textbook: return contact::solve_textbook(u, dy, phi);
-    case method::newton: return contact::solve_newton(u, dy, phi);
-    case method::boost_quadratic: return peers::solve_boost(u, dy, phi);
-    case method::eigen_companion:
-      if constexpr (std::is_floating_point_v<T>) return peers::solve_eigen(u, dy, phi);
-      else return {std::numeric_limits<T>::quiet_NaN(), contact::contact_case::invalid};  // refused by the scene parser
     case method::batch: {
       T s;
       int which;
       contact::solve_batch(&u, &dy, &phi, &s, &which, 1);
       return {s, static_cast<contact::contact_case>(which)};
     }
-    default: return contact::solve_stable(u, dy, phi);
+    case method::boost_quadratic: return peers::solve_boost(u, dy, phi);
+    case method::eigen_companion:
+      if constexpr (runs_in<T>(method::eigen_companion)) return peers::solve_eigen(u, dy, phi);
+      break;  // unsupported() keeps it out of the scenes
+    default: break;
   }
+  return {std::numeric_limits<T>::quiet_NaN(), contact::contact_case::invalid};
 }
 
 template <class T>
@@ -64,14 +59,83 @@ double to_double(const T& x) {
   return static_cast<double>(x);
 }
 
+// Types that hold more than double: their results are also scored after rounding to double.
+template <class T>
+inline constexpr bool wider_than_double =
+    !std::is_floating_point_v<T> || std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+
+// ---- accuracy ----------------------------------------------------------------------
+
+// The inputs as T (exactly: they are doubles).
+template <class T>
+struct columns {
+  std::vector<T> u, dy, phi;
+  explicit columns(const std::vector<input>& inputs) {
+    for (const auto& in : inputs) {
+      u.emplace_back(in.u);
+      dy.emplace_back(in.dy);
+      phi.emplace_back(in.phi);
+    }
+  }
+  std::size_t size() const { return u.size(); }
+};
+
+template <class T>
+struct solved {
+  std::vector<T> s;
+  std::vector<int> which;
+};
+
+// Every input solved by `m`; batch in one call, as its users call it.
+template <class T>
+solved<T> solve_all(method m, const columns<T>& in) {
+  const std::size_t n = in.size();
+  solved<T> out{std::vector<T>(n), std::vector<int>(n)};
+  if (m == method::batch) {
+    contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), out.s.data(), out.which.data(),
+                         static_cast<std::ptrdiff_t>(n));
+    return out;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto result = solve_one(m, in.u[i], in.dy[i], in.phi[i]);
+    out.s[i] = result.s;
+    out.which[i] = static_cast<int>(result.which);
+  }
+  return out;
+}
+
+// One result's ulp error, added into the counts of `a`; `worst_as_double`
+// gathers the error of the result rounded to double (wider types only).
+template <class T>
+double score(accuracy_result& a, const T& s, int which, const T& dy, int family,
+             const contact::reference::certified& exact, double& worst_as_double) {
+  using std::isinf;
+  using std::isnan;
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const double error = contact::reference::ulp_error<T>(s, exact);
+  a.histogram[static_cast<std::size_t>(histogram_bin(error))]++;
+  if (isnan(s)) ++a.nan;
+  if (isinf(s)) {
+    ++a.inf;
+    if (error == 0) ++a.inf_overflow;
+  }
+  const auto c = static_cast<contact::contact_case>(which);
+  if (c != exact.which) ++a.wrong_case;
+  if (!contact::lies_on_its_side(c, s, dy)) ++a.complementarity;
+  double& family_worst = a.family_max[static_cast<std::size_t>(family)];
+  family_worst = std::isnan(error) ? infinity : std::max(family_worst, error);
+  if constexpr (wider_than_double<T>) {
+    const double as_double = contact::reference::ulp_error<double>(to_double(s), exact);
+    worst_as_double = std::isnan(as_double) ? infinity : std::max(worst_as_double, as_double);
+  }
+  return error;
+}
+
 template <class T>
 void accuracy(const run& r, const std::vector<input>& inputs, const reference_list& references, std::size_t families,
               bool keep_raw, progress& bar, std::vector<accuracy_result>& out) {
-  const std::size_t n = inputs.size();
-  std::vector<T> u(n), dy(n), phi(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = T(inputs[i].u), dy[i] = T(inputs[i].dy), phi[i] = T(inputs[i].phi);
-  constexpr bool wider_than_double = std::numeric_limits<T>::digits > 53 || !std::numeric_limits<T>::is_specialized ||
-                                     !std::is_floating_point_v<T>;
+  const columns<T> in(inputs);
+  const std::size_t n = in.size();
   for (method m : r.methods) {
     accuracy_result a;
     a.type = std::string(contact::type_name<T>);
@@ -79,53 +143,27 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
     a.samples = static_cast<long>(n);
     a.family_max.assign(families, -1.0);
     a.reference_bits = static_cast<int>(mpfr_get_prec(references.front().s.get()));
-    std::vector<T> s(n);
-    std::vector<int> which(n);
-    if (m == method::batch) {
-      contact::solve_batch(u.data(), dy.data(), phi.data(), s.data(), which.data(), static_cast<std::ptrdiff_t>(n));
-    } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto result = solve_one(m, u[i], dy[i], phi[i]);
-        s[i] = result.s;
-        which[i] = static_cast<int>(result.which);
-      }
-    }
+    solved<T> results = solve_all(m, in);
     std::vector<double> errors(n);
     double worst_as_double = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      using std::isinf;
-      using std::isnan;
-      const double e = contact::reference::ulp_error<T>(s[i], references[i]);
-      errors[i] = e;
-      a.histogram[static_cast<std::size_t>(histogram_bin(e))]++;
-      if (isnan(s[i])) ++a.nan;
-      if (isinf(s[i])) {
-        ++a.inf;
-        if (e == 0) ++a.inf_overflow;
-      }
-      const auto c = static_cast<contact::contact_case>(which[i]);
-      if (c != references[i].which) ++a.wrong_case;
-      if (!contact::lies_on_its_side(c, s[i], dy[i])) ++a.complementarity;
-      double& family_worst = a.family_max[static_cast<std::size_t>(inputs[i].family)];
-      family_worst = std::isnan(e) ? std::numeric_limits<double>::infinity() : std::max(family_worst, e);
-      if constexpr (wider_than_double) {
-        const double as_double = contact::reference::ulp_error<double>(to_double(s[i]), references[i]);
-        worst_as_double = std::isnan(as_double) ? std::numeric_limits<double>::infinity() : std::max(worst_as_double, as_double);
-      }
+      errors[i] = score(a, results.s[i], results.which[i], in.dy[i], inputs[i].family, references[i], worst_as_double);
       if ((i & 1023) == 0) bar.update(static_cast<long>(i));
     }
-    if constexpr (wider_than_double) a.max_ulp_as_double = worst_as_double;
+    if constexpr (wider_than_double<T>) a.max_ulp_as_double = worst_as_double;
     a.ulps = summarize(errors);
     if (keep_raw) {
       a.errors = std::move(errors);
-      a.which = std::move(which);
+      a.which = std::move(results.which);
       a.inputs = inputs;
-      for (std::size_t i = 0; i < n; ++i) a.s_text.push_back(contact::round_trip_text(s[i]));
+      for (const T& s : results.s) a.s_text.push_back(contact::round_trip_text(s));
     }
     out.push_back(std::move(a));
     bar.finish();
   }
 }
+
+// ---- timing ------------------------------------------------------------------------
 
 template <class T>
 void register_timings(const run& r, const std::vector<input>& lanes, const std::string& prefix) {
@@ -171,84 +209,122 @@ void register_timings(const run& r, const std::vector<input>& lanes, const std::
     }
 }
 
-// The energy-conserving oscillator of context.md in T, stepped with method m.
+// ---- energy ------------------------------------------------------------------------
+
+// |H - H[0]| / H[0] for H of (S.2) evaluated exactly (MPFR) from the parameters
+// and the state as T holds them: what it shows is the simulation's drift, not
+// the rounding of H.
+template <class T>
+class exact_energy_drift {
+ public:
+  exact_energy_drift(const contact::harness::oscillator<T>& scheme, const contact::harness::oscillator_state<T>& start)
+      : bits_(std::max<mpfr_prec_t>(256, 4 * contact::detail::precision_of<T>())),
+        mass_(contact::reference::exactly(scheme.mass, bits_)),
+        spring_(contact::reference::exactly(scheme.spring, bits_)),
+        height_(contact::reference::exactly(scheme.barrier_height, bits_)),
+        stiffness_(contact::reference::exactly(scheme.barrier_stiffness, bits_)),
+        start_(energy(start)) {}
+
+  double operator()(const contact::harness::oscillator_state<T>& x) {
+    contact::reference::real difference(bits_);
+    mpfr_sub(difference.get(), energy(x).get(), start_.get(), MPFR_RNDN);
+    mpfr_div(difference.get(), difference.get(), start_.get(), MPFR_RNDN);
+    return std::fabs(mpfr_get_d(difference.get(), MPFR_RNDN));
+  }
+
+ private:
+  // (S.2) H = (p^2 / m + K y^2 + k_b floor(h_b - y)^2) / 2
+  contact::reference::real energy(const contact::harness::oscillator_state<T>& x) {
+    using contact::reference::exactly;
+    const contact::reference::real y = exactly(x.y, bits_), p = exactly(x.p, bits_);
+    contact::reference::real total(bits_), term(bits_), gap(bits_);
+    mpfr_sqr(total.get(), p.get(), MPFR_RNDN);
+    mpfr_div(total.get(), total.get(), mass_.get(), MPFR_RNDN);
+    mpfr_sqr(term.get(), y.get(), MPFR_RNDN);
+    mpfr_mul(term.get(), term.get(), spring_.get(), MPFR_RNDN);
+    mpfr_add(total.get(), total.get(), term.get(), MPFR_RNDN);
+    mpfr_sub(gap.get(), height_.get(), y.get(), MPFR_RNDN);
+    if (mpfr_sgn(gap.get()) > 0) {
+      mpfr_sqr(term.get(), gap.get(), MPFR_RNDN);
+      mpfr_mul(term.get(), term.get(), stiffness_.get(), MPFR_RNDN);
+      mpfr_add(total.get(), total.get(), term.get(), MPFR_RNDN);
+    }
+    mpfr_div_2ui(total.get(), total.get(), 1, MPFR_RNDN);
+    return total;
+  }
+
+  mpfr_prec_t bits_;
+  contact::reference::real mass_, spring_, height_, stiffness_, start_;
+};
+
+// The plotted series: the largest exact drift within each of `buckets` equal
+// runs of steps (step n, from 1, falls into bucket (n - 1) buckets / steps).
+class drift_envelope {
+ public:
+  drift_envelope(energy_result& e, long buckets) : e_(e), buckets_(buckets) {
+    e_.envelope.assign(static_cast<std::size_t>(buckets), 0.0);
+  }
+
+  void record(long n, double exact, double in_type) {
+    e_.max_exact = std::max(e_.max_exact, exact);
+    e_.max_in_type = std::max(e_.max_in_type, in_type);
+    e_.final_exact = exact;
+    double& bucket = e_.envelope[bucket_of(n)];
+    bucket = std::max(bucket, exact);
+  }
+
+  // The state stopped being finite at step n: every figure from there on is infinite.
+  void blew_up(long n) {
+    e_.finite = false;
+    e_.max_exact = e_.max_in_type = e_.final_exact = std::numeric_limits<double>::infinity();
+    for (std::size_t k = bucket_of(n); k < e_.envelope.size(); ++k) e_.envelope[k] = e_.max_exact;
+  }
+
+  // Each bucket is plotted at the time of its last step.
+  void set_times(double sample_rate) {
+    e_.time.resize(static_cast<std::size_t>(buckets_));
+    for (long k = 0; k < buckets_; ++k)
+      e_.time[static_cast<std::size_t>(k)] = (double(k + 1) * double(e_.steps) / double(buckets_)) / sample_rate;
+  }
+
+ private:
+  std::size_t bucket_of(long n) const { return static_cast<std::size_t>((n - 1) * buckets_ / e_.steps); }
+  energy_result& e_;
+  long buckets_;
+};
+
+// The oscillator of docs/equations.md, section 1, in T, stepped with method m.
 template <class T>
 energy_result simulate(const oscillator& o, method m) {
-  using contact::reference::exactly;
-  using contact::reference::real;
+  using std::fabs;
+  using std::isfinite;
   energy_result e;
   e.type = std::string(contact::type_name<T>);
   e.algorithm = name_of(m);
   e.steps = static_cast<long>(std::llround(o.duration * o.sample_rate));
-  const T mass(o.mass), spring(o.spring), height(o.barrier_height), stiffness(o.barrier_stiffness);
-  const T dt = T(1) / T(o.sample_rate);
-  const T a = T(2) * mass / (dt * dt) + spring / T(2);
-  const T phi = stiffness / (T(2) * a);
-  T y(o.initial_displacement), p = mass * T(o.initial_velocity);
-
-  // H exactly, in MPFR, from the parameters and the state as T holds them.
-  const mpfr_prec_t bits = std::max<mpfr_prec_t>(256, 4 * contact::detail::precision_of<T>());
-  const real m_x = exactly(mass, bits), k_x = exactly(spring, bits), h_x = exactly(height, bits),
-             kb_x = exactly(stiffness, bits);
-  real term(bits), total(bits), gap(bits);
-  auto exact_energy = [&](const T& y_now, const T& p_now) {
-    const real y_x = exactly(y_now, bits), p_x = exactly(p_now, bits);
-    mpfr_sqr(total.get(), p_x.get(), MPFR_RNDN);
-    mpfr_div(total.get(), total.get(), m_x.get(), MPFR_RNDN);
-    mpfr_sqr(term.get(), y_x.get(), MPFR_RNDN);
-    mpfr_mul(term.get(), term.get(), k_x.get(), MPFR_RNDN);
-    mpfr_add(total.get(), total.get(), term.get(), MPFR_RNDN);
-    mpfr_sub(gap.get(), h_x.get(), y_x.get(), MPFR_RNDN);
-    if (mpfr_sgn(gap.get()) > 0) {
-      mpfr_sqr(term.get(), gap.get(), MPFR_RNDN);
-      mpfr_mul(term.get(), term.get(), kb_x.get(), MPFR_RNDN);
-      mpfr_add(total.get(), total.get(), term.get(), MPFR_RNDN);
-    }
-    real energy(bits);
-    mpfr_div_2ui(energy.get(), total.get(), 1, MPFR_RNDN);
-    return energy;
-  };
-  auto energy_in_type = [&](const T& y_now, const T& p_now) {
-    const T g = height - y_now;
-    const T barrier = g > 0 ? T(stiffness * g * g / T(2)) : T(0);
-    return T(p_now * p_now / (T(2) * mass) + spring * y_now * y_now / T(2) + barrier);
-  };
-  const real h0 = exact_energy(y, p);
-  const T h0_in_type = energy_in_type(y, p);
-  real difference(bits);
-  const long buckets = std::min(o.plot_points, e.steps);
-  e.time.assign(static_cast<std::size_t>(buckets), 0.0);
-  e.envelope.assign(static_cast<std::size_t>(buckets), 0.0);
+  const T mass(o.mass);
+  const contact::harness::oscillator<T> scheme(mass, T(o.spring), T(o.barrier_height), T(o.barrier_stiffness),
+                                               T(T(1) / T(o.sample_rate)));
+  contact::harness::oscillator_state<T> x{T(o.initial_displacement), T(mass * T(o.initial_velocity))};
+  exact_energy_drift<T> drift(scheme, x);
+  const T start_in_type = scheme.energy(x);
+  drift_envelope envelope(e, std::min(o.plot_points, e.steps));
   for (long n = 1; n <= e.steps; ++n) {
-    const T u = (spring * y - T(2) * p / dt) / a;
-    const T dy = height - y;
-    const auto step = solve_one(m, u, dy, phi);
-    if (dy > 0 || step.s < dy) ++e.contact_steps;
-    const T y_next = y + step.s;
-    p = T(2) * mass * step.s / dt - p;
-    y = y_next;
-    using std::isfinite;
-    if (!isfinite(y) || !isfinite(p)) {
-      e.finite = false;
-      e.max_exact = e.max_in_type = e.final_exact = std::numeric_limits<double>::infinity();
-      for (long k = (n - 1) * buckets / e.steps; k < buckets; ++k) e.envelope[static_cast<std::size_t>(k)] = e.max_exact;
+    const T dy = scheme.compression(x.y);
+    const auto step = solve_one(m, scheme.u(x.y, x.p), dy, scheme.phi);
+    if (dy > 0 || step.s < dy) ++e.contact_steps;  // the barrier pushes during this step
+    x = scheme.next(x, step.s);
+    if (!isfinite(x.y) || !isfinite(x.p)) {
+      envelope.blew_up(n);
       break;
     }
-    mpfr_sub(difference.get(), exact_energy(y, p).get(), h0.get(), MPFR_RNDN);
-    mpfr_div(difference.get(), difference.get(), h0.get(), MPFR_RNDN);
-    const double relative = std::fabs(mpfr_get_d(difference.get(), MPFR_RNDN));
-    using std::fabs;
-    const double relative_in_type = to_double(T(fabs(T(energy_in_type(y, p) - h0_in_type)) / h0_in_type));
-    e.max_exact = std::max(e.max_exact, relative);
-    e.max_in_type = std::max(e.max_in_type, relative_in_type);
-    e.final_exact = relative;
-    const auto k = static_cast<std::size_t>((n - 1) * buckets / e.steps);
-    e.envelope[k] = std::max(e.envelope[k], relative);
+    envelope.record(n, drift(x), to_double(T(fabs(T(scheme.energy(x) - start_in_type)) / start_in_type)));
   }
-  for (long k = 0; k < buckets; ++k)
-    e.time[static_cast<std::size_t>(k)] = (double(k + 1) * double(e.steps) / double(buckets)) / o.sample_rate;
+  envelope.set_times(o.sample_rate);
   return e;
 }
+
+// ---- the table ---------------------------------------------------------------------
 
 template <class T>
 int digits() {
@@ -260,5 +336,4 @@ type_ops make_ops() {
   return {std::string(contact::type_name<T>), &digits<T>, &accuracy<T>, &register_timings<T>, &simulate<T>};
 }
 
-}  // namespace typed
-}  // namespace report
+}  // namespace report::typed

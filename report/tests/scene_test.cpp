@@ -2,11 +2,16 @@
 // "FILE:LINE: reason" with the line of the offending key or value.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
+#include "contact/types.hpp"
 #include "inputs.hpp"
 #include "scene.hpp"
+#include "type_ops.hpp"
 
 namespace {
 
@@ -171,6 +176,19 @@ TEST(scene, names_of_types_algorithms_checks_and_generators_are_checked) {
                "eigen_companion runs in float, double and long_double only");
   expect_error(edited("[\"stable\", \"textbook\"]", "[\"stable\", \"stable\"]"), "[\"stable\", \"stable\"]",
                "named twice");
+}
+
+// The report's types are the registry's: each name resolves to its own
+// measurements, and a name the registry does not hold is an error, never a default.
+TEST(scene, type_names_are_the_registry_s_and_an_unknown_one_is_an_error) {
+  for (std::string_view name : contact::type_names) {
+    EXPECT_EQ(report::ops_for(name).name, name);
+    EXPECT_EQ(report::unsupported(report::method::stable, name), "") << name;
+  }
+  EXPECT_THROW(report::ops_for("quad"), std::invalid_argument);
+  EXPECT_THROW(report::unsupported(report::method::stable, "quad"), std::invalid_argument);
+  EXPECT_EQ(report::unsupported(report::method::eigen_companion, "double"), "");
+  EXPECT_NE(report::unsupported(report::method::eigen_companion, "mpfr"), "");
 }
 
 TEST(scene, values_are_checked) {

@@ -46,36 +46,59 @@ T bracket_midpoint(const T& lower, const T& upper) {
   return lower / 2 + upper / 2;
 }
 
-// Newton from the kink s = dy, where the sign of the residual says which side
-// the root is on. R is C1 there and linear or concave on each side, so from the
-// kink the iterates approach the root monotonically; a step that leaves the
-// bracket of signs seen so far is replaced by its midpoint. Stops when a step no
-// longer changes s by more than half an ulp, or after max_iterations.
+// What an iteration did: the solution and how many residuals it evaluated
+// after the one at the kink (the cost a caller pays).
 template <class T>
-solution<T> solve_newton(const T& u, const T& dy, const T& phi, int max_iterations = 4096) {
+struct newton_result {
+  solution<T> answer;
+  int iterations;
+};
+
+// Newton from the kink s = dy, where the sign of the residual says which side
+// the root is on; a step that leaves the bracket of signs seen so far is
+// replaced by its midpoint. R is linear on the sides of (A.29) and (A.31) and
+// concave on those of (A.30) and (A.32). On the side of (A.30) the first step
+// from the kink overshoots the root; after that, and on the other sides from the start, the iterates
+// approach it monotonically. It stops, keeping the iterate of smaller |R|, when
+//   - a Newton step rounds back to s itself, or stays on its side of the root
+//     without shrinking |R| (near the root the rounded residual is noise, and
+//     iterates that alternate by an ulp would otherwise run on),
+//   - the bracket has collapsed to neighbouring values of T, or
+//   - after max_iterations residuals.
+// So it cannot cycle; what stopping early costs in accuracy is what the
+// report and the tests measure.
+template <class T>
+newton_result<T> newton_iterate(const T& u, const T& dy, const T& phi, int max_iterations = 50) {
   using std::fabs;
-  if (auto invalid = detail::reject_invalid(u, dy, phi)) return *invalid;
-  const T at_kink = newton_form::residual_of(dy, u, dy, phi).residual;
-  const bool root_below_kink = dy > 0 ? at_kink >= 0 : at_kink > 0;
+  if (auto invalid = detail::reject_invalid(u, dy, phi)) return {*invalid, 0};
+  auto [r, slope] = newton_form::residual_of(dy, u, dy, phi);
+  const bool root_below_kink = dy > 0 ? r >= 0 : r > 0;
   const contact_case which = dy > 0 ? (root_below_kink ? contact_case::contact : contact_case::release)
                                     : (root_below_kink ? contact_case::impact : contact_case::free);
-  if (at_kink == 0) return {dy, which};
-
+  // R is C1 at the kink except at dy = 0, where (A.8)'s side has slope 1 + phi
+  // (it is the line (1 + phi) s + u there) and (A.5)'s side slope 1
+  if (dy == 0 && which == contact_case::impact) slope = 1 + phi;
   const T largest = (std::numeric_limits<T>::max)();
-  const T half_epsilon = std::numeric_limits<T>::epsilon() / 2;
   T lower = root_below_kink ? -largest : dy;
   T upper = root_below_kink ? dy : largest;
   T s = dy;
-  for (int i = 0; i < max_iterations; ++i) {
-    const auto [r, slope] = newton_form::residual_of(s, u, dy, phi);
-    if (r == 0) break;
+  int iterations = 0;
+  while (r != 0 && iterations < max_iterations) {
     (r < 0 ? lower : upper) = s;
+    if (!(detail::next_up(lower) < upper)) break;  // no value of T left strictly inside
     T next = s - r / slope;
-    if (!(next >= lower && next <= upper)) next = bracket_midpoint(lower, upper);
-    // (a collapsed bracket converges too: its only point is s itself)
-    const bool converged = fabs(next - s) <= half_epsilon * fabs(s);
+    if (next == s) break;  // the step is below half an ulp of s: nothing left to gain
+    const bool newton_step = next > lower && next < upper;
+    if (!newton_step) next = bracket_midpoint(lower, upper);
+    const auto [r_next, slope_next] = newton_form::residual_of(next, u, dy, phi);
+    ++iterations;
+    // a step that stays on its side of the root must shrink |R|, or the
+    // residual is down to its rounding noise (s is then the better of the two)
+    const bool same_side = (r_next < 0) == (r < 0);
+    if (newton_step && same_side && !(fabs(r_next) < fabs(r))) break;
     s = next;
-    if (converged) break;
+    r = r_next;
+    slope = slope_next;
   }
   // A root above T's range: the residual has not changed sign at the largest
   // finite value. None lies below it: below the kink the root is at least -u
@@ -86,7 +109,12 @@ solution<T> solve_newton(const T& u, const T& dy, const T& phi, int max_iteratio
   // side: only the strict sides of (A.30) and (A.32) can need a step off dy.
   if (which == contact_case::impact && !(s < dy)) s = detail::next_down(dy);
   if (which == contact_case::release && !(s > dy)) s = detail::next_up(dy);
-  return {s, which};
+  return {{s, which}, iterations};
+}
+
+template <class T>
+solution<T> solve_newton(const T& u, const T& dy, const T& phi, int max_iterations = 50) {
+  return newton_iterate(u, dy, phi, max_iterations).answer;
 }
 
 }  // namespace contact

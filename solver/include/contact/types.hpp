@@ -48,9 +48,13 @@ template <> inline constexpr std::string_view type_name<bin_float_50> = "cpp_bin
 template <> inline constexpr std::string_view type_name<bin_float_100> = "cpp_bin_float_100";
 template <> inline constexpr std::string_view type_name<mpfr_float> = "mpfr";
 
-inline constexpr auto type_names = []<class... Ts>(type_list<Ts...>) {
-  return std::array<std::string_view, sizeof...(Ts)>{type_name<Ts>...};
-}(scalar_types{});
+template <class List>
+struct names_in;
+template <class... Ts>
+struct names_in<type_list<Ts...>> {
+  static constexpr std::array<std::string_view, sizeof...(Ts)> value{type_name<Ts>...};
+};
+inline constexpr auto type_names = names_in<scalar_types>::value;
 
 // Calls f(T{}) for each registered T, in the registry's order.
 template <class F>

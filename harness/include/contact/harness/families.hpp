@@ -7,7 +7,7 @@
 // is anything with
 //     std::uint64_t bits()              64 uniformly random bits
 //     long integer(long low, long high) uniform in [low, high]
-// (`seeded_source` below; the tests wrap RapidCheck's generators the same way).
+// (`seeded_source` in random.hpp; the tests wrap RapidCheck's generators the same way).
 // Every draw is in T with T's full precision, so the wider types get inputs
 // that double cannot represent.
 //
@@ -18,45 +18,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 #include <type_traits>
 
 #include "contact/detail/float_tools.hpp"
+#include "contact/harness/random.hpp"
 #include "contact/harness/oscillator.hpp"
 
 namespace contact::harness {
-
-template <class T>
-struct input {
-  T u, dy, phi;
-};
-
-// ---- randomness ----------------------------------------------------------------
-
-// A source over std::mt19937_64: deterministic for a seed.
-class seeded_source {
- public:
-  explicit seeded_source(std::uint64_t seed) : engine_(seed) {}
-  std::uint64_t bits() { return engine_(); }
-  long integer(long low, long high) {
-    const std::uint64_t span = std::uint64_t(high - low) + 1;
-    return span == 0 ? low + long(engine_()) : low + long(engine_() % span);
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
-
-template <class Source>
-bool coin(Source& source) {
-  return source.integer(0, 1) == 1;
-}
-
-// Uniform in [0, 1), 53 bits.
-template <class Source>
-double unit(Source& source) {
-  return double(source.bits() >> 11) * 0x1p-53;
-}
 
 // A significand with T's full precision, uniform in [1, 2): 32 random bits at a
 // time, exact while they fit; T rounds once at the end.
@@ -83,16 +51,6 @@ T random_sign(Source& source, const T& magnitude) {
 }
 
 // ---- how one number is drawn ---------------------------------------------------
-
-// A distribution of one number, as the report's scenes name them: a magnitude
-// log-uniform over [10^low, 10^high] or [2^low, 2^high], uniform over [low, high],
-// or the constant low; then a sign (+1, -1, or 0 for either with equal odds).
-struct distribution {
-  enum class shape { log10, log2, uniform, constant };
-  shape kind = shape::constant;
-  double low = 0, high = 0;
-  int sign = 1;
-};
 
 template <class T, class Source>
 T draw(Source& source, const distribution& d) {

@@ -133,7 +133,7 @@ struct has_correct_sqrt<boost::multiprecision::number<boost::multiprecision::bac
     : std::false_type {};
 
 // sqrt(x) rounded to nearest. Where T's own sqrt is only faithful (within an
-// ulp), its result r is moved to a neighbour while x lies beyond the square of
+// ulp), its result r is moved to a neighbour when x lies beyond the square of
 // the midpoint between them: the sign of x - (r -+ h)^2 = x - r^2 -+ 2 r h - h^2
 // (2h the gap to the neighbour) is the sign of an exact sum (r^2 by two_prod;
 // r h and h^2 are exact, h being a power of two). A root is never a midpoint,
@@ -145,16 +145,14 @@ T square_root(const T& x) {
   if constexpr (!has_correct_sqrt<T>::value) {
     using std::isfinite;
     if (!(x > 0) || !isfinite(x)) return root;
-    for (int step = 0; step < 2; ++step) {
-      const auto square = two_prod(root, root);
-      const T above = next_up(root), below = next_down(root);
-      const T half_up = (above - root) / 2, half_down = (root - below) / 2;
-      const T beyond_upper_midpoint[5] = {x, -square.high, -square.low, T(-2 * root * half_up), T(-half_up * half_up)};
-      const T below_lower_midpoint[5] = {x, -square.high, -square.low, T(2 * root * half_down), T(-half_down * half_down)};
-      if (sign_of_exact_sum(beyond_upper_midpoint) > 0) root = above;
-      else if (sign_of_exact_sum(below_lower_midpoint) < 0) root = below;
-      else break;
-    }
+    // a faithful root is at most one neighbour away from the nearest
+    const auto square = two_prod(root, root);
+    const T above = next_up(root), below = next_down(root);
+    const T half_up = (above - root) / 2, half_down = (root - below) / 2;
+    const T beyond_upper_midpoint[5] = {x, -square.high, -square.low, T(-2 * root * half_up), T(-half_up * half_up)};
+    const T below_lower_midpoint[5] = {x, -square.high, -square.low, T(2 * root * half_down), T(-half_down * half_down)};
+    if (sign_of_exact_sum(beyond_upper_midpoint) > 0) return above;
+    if (sign_of_exact_sum(below_lower_midpoint) < 0) return below;
   }
   return root;
 }
