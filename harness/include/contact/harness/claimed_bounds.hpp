@@ -22,21 +22,20 @@
 
 namespace contact::harness {
 
-// The branches of solve_stable, named as the Gappa files proofs/gappa/stable_<branch>.g.
-inline const std::vector<std::string>& stable_branches() {
-  static const std::vector<std::string> names = {"free", "impact", "contact", "release_u_positive",
-                                                 "release_u_nonpositive"};
-  return names;
+// The branch of solve_stable that an input of case `which` takes, named as the
+// Gappa files proofs/gappa/stable_<branch>.g: the case's name, and for (A.32)
+// the sign of u, which picks the rationalised root or the plain one.
+inline std::string branch_of(contact_case which, bool u_positive) {
+  if (which != contact_case::release) return std::string(name_of(which));
+  return std::string(name_of(which)) + (u_positive ? "_u_positive" : "_u_nonpositive");
 }
 
-// The branch of solve_stable that an input of case `which` takes.
-inline std::string branch_of(contact_case which, bool u_positive) {
-  switch (which) {
-    case contact_case::free: return "free";
-    case contact_case::impact: return "impact";
-    case contact_case::contact: return "contact";
-    default: return u_positive ? "release_u_positive" : "release_u_nonpositive";
-  }
+inline const std::vector<std::string>& stable_branches() {
+  static const std::vector<std::string> names = {
+      branch_of(contact_case::free, false), branch_of(contact_case::impact, false),
+      branch_of(contact_case::contact, false), branch_of(contact_case::release, true),
+      branch_of(contact_case::release, false)};
+  return names;
 }
 
 class claimed_bounds {
