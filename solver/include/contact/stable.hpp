@@ -74,9 +74,9 @@ namespace detail {
 // is within eps (|u + dy| + |e|) of the exact value, so outside the margin
 // 4 eps (|u| + |dy| + |phi dy|) its sign is the exact sign, and only inputs
 // within a few ulps of the boundary pay for the exact sum.
-template <class T>
-bool stays_in_contact(const T& u, const T& dy, const T& phi, bool plain) {
-  if (plain) {
+template <bool plain, class T>
+bool stays_in_contact(const T& u, const T& dy, const T& phi) {
+  if constexpr (plain) {
     using std::fabs;
     const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
     const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + fabs(dy) + fabs(phi * dy));
@@ -94,36 +94,58 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi, bool plain) {
   return sign_of_exact_sum(terms) >= 0;
 }
 
-template <class T, class Formula>
-T evaluate(Formula formula, const T& x, const T& y, const T& phi, bool plain) {
-  if (plain) return formula(x, y, phi);
-  using S = scaled<T>;
-  return formula(S(x), S(y), S(phi)).value();
+template <bool plain, class T, class Formula>
+T evaluate(Formula formula, const T& x, const T& y, const T& phi) {
+  if constexpr (plain) {
+    return formula(x, y, phi);
+  } else {
+    using S = scaled<T>;
+    return formula(S(x), S(y), S(phi)).value();
+  }
+}
+
+}  // namespace detail
+
+namespace detail {
+
+// The four cases, once the input is valid and `plain` says whether plain T
+// arithmetic is safe (else the same formulas run on scaled<T>).
+template <bool plain, class T>
+solution<T> solve_cases(const T& u, const T& dy, const T& phi) {
+  if (dy <= 0) {
+    if (u <= -dy) return {-u, contact_case::free};  // (A.29), exact
+    T s = evaluate<plain>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi);
+    // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
+    // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
+    if (s < -u) s = -u;
+    if (!(s < dy)) s = next_down(dy);
+    return {s, contact_case::impact};
+  }
+  if (stays_in_contact<plain>(u, dy, phi)) {
+    T s = evaluate<plain>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi);
+    if (s > dy) s = dy;
+    return {s, contact_case::contact};
+  }
+  T s = evaluate<plain>([](const auto&... x) { return stable_form::release(x...); }, u, dy, phi);
+  if (!(s > dy)) s = next_up(dy);
+  return {s, contact_case::release};
+}
+
+// Any input: invalid ones, zeros, and magnitudes outside the plain window.
+template <class T>
+solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
+  if (auto invalid = reject_invalid(u, dy, phi)) return *invalid;
+  if (safe_window<T>::holds(u, dy, phi)) return solve_cases<true>(u, dy, phi);
+  return solve_cases<false>(u, dy, phi);
 }
 
 }  // namespace detail
 
 template <class T>
 solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
-  if (auto invalid = detail::reject_invalid(u, dy, phi)) return *invalid;
-  const bool plain = detail::safe_window<T>::holds(u, dy, phi);
-  if (dy <= 0) {
-    if (u <= -dy) return {-u, contact_case::free};  // (A.29), exact
-    T s = detail::evaluate<T>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi, plain);
-    // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
-    // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
-    if (s < -u) s = -u;
-    if (!(s < dy)) s = detail::next_down(dy);
-    return {s, contact_case::impact};
-  }
-  if (detail::stays_in_contact(u, dy, phi, plain)) {
-    T s = detail::evaluate<T>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi, plain);
-    if (s > dy) s = dy;
-    return {s, contact_case::contact};
-  }
-  T s = detail::evaluate<T>([](const auto&... x) { return stable_form::release(x...); }, u, dy, phi, plain);
-  if (!(s > dy)) s = detail::next_up(dy);
-  return {s, contact_case::release};
+  // the common input, tested on its bits: valid, non-zero, inside the plain window
+  if (detail::inside_plain_window(u, dy, phi)) [[likely]] return detail::solve_cases<true>(u, dy, phi);
+  return detail::solve_anywhere(u, dy, phi);
 }
 
 }  // namespace contact
