@@ -21,6 +21,25 @@
 #include "contact/harness/claimed_bounds.hpp"
 #include "contact/harness/families.hpp"
 
+namespace contact::harness {
+
+// An input as the tests print it: exact (C99 hex) for float and double, all
+// significant digits for the wider types. In the families' namespace, where
+// GoogleTest's and RapidCheck's printers look for it.
+template <class T>
+std::ostream& operator<<(std::ostream& out, const input<T>& x) {
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+    char text[160];
+    std::snprintf(text, sizeof text, "u=%a dy=%a phi=%a", double(x.u), double(x.dy), double(x.phi));
+    return out << text;
+  } else {
+    const int digits = static_cast<int>(detail::precision_of<T>() * 0.30103) + 2;
+    return out << std::setprecision(digits) << "u=" << x.u << " dy=" << x.dy << " phi=" << x.phi;
+  }
+}
+
+}  // namespace contact::harness
+
 namespace contact::testing {
 
 // ---- the claimed bounds --------------------------------------------------
@@ -48,18 +67,6 @@ double stable_bound_for(contact_case which, const T& u) {
 // ---- inputs: the families of contact/harness/families.hpp, drawn by RapidCheck
 
 using harness::input;
-
-template <class T>
-std::ostream& operator<<(std::ostream& out, const input<T>& x) {
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
-    char text[160];
-    std::snprintf(text, sizeof text, "u=%a dy=%a phi=%a", double(x.u), double(x.dy), double(x.phi));
-    return out << text;
-  } else {
-    const int digits = static_cast<int>(detail::precision_of<T>() * 0.30103) + 2;
-    return out << std::setprecision(digits) << "u=" << x.u << " dy=" << x.dy << " phi=" << x.phi;
-  }
-}
 
 // The families' randomness source, drawn from RapidCheck inside rc::gen::exec,
 // so that a failing input shrinks (integers towards the low end of their

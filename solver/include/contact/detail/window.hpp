@@ -52,30 +52,35 @@ struct safe_window {
 };
 static_assert(plain_window<double> == 240 && plain_window<float> == 24);
 
-// The common case on bit patterns, for binary32 and binary64: u, dy and phi
-// are normal, |u| and |dy| in [2^-E, 2^E] and phi in it too (its sign bit
-// makes a negative phi fail). Bit patterns of non-negative numbers order as
-// their values, so each test is one unsigned comparison; zero, subnormals,
-// NaN and infinity all fail it, and take safe_window's general test instead.
-// Other types have no such shortcut.
+// The plain window on bit patterns, for binary32 and binary64: |x| in
+// [2^-E, 2^E] with x normal. Bit patterns of non-negative numbers order as
+// their values, so the test is one unsigned comparison; zero, subnormals, NaN
+// and infinity all fail it.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+bool magnitude_inside_plain_window(const T& x) {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  constexpr bits magnitude = ~(bits(1) << (sizeof(bits) * 8 - 1));
+  constexpr T highest = [] {
+    T power = 1;
+    for (long k = 0; k < plain_window<T>; ++k) power *= 2;
+    return power;
+  }();
+  constexpr bits lowest = std::bit_cast<bits>(T(1) / highest);
+  constexpr bits span = std::bit_cast<bits>(highest) - lowest;
+  return bits((std::bit_cast<bits>(x) & magnitude) - lowest) <= span;
+}
+
+// The common input: valid, u, dy and phi non-zero and inside the plain window,
+// phi > 0. For binary32 and binary64 a test of bits; other types have no such
+// shortcut and take safe_window's general test.
 template <class T>
 bool inside_plain_window(const T& u, const T& dy, const T& phi) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
-    using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-    constexpr bits magnitude = ~(bits(1) << (sizeof(bits) * 8 - 1));
-    constexpr T highest = [] {
-      T power = 1;
-      for (long k = 0; k < plain_window<T>; ++k) power *= 2;
-      return power;
-    }();
-    constexpr bits lowest = std::bit_cast<bits>(T(1) / highest);
-    constexpr bits span = std::bit_cast<bits>(highest) - lowest;
-    auto inside = [](bits b) { return bits(b - lowest) <= span; };
-    return inside(std::bit_cast<bits>(u) & magnitude) && inside(std::bit_cast<bits>(dy) & magnitude) &&
-           inside(std::bit_cast<bits>(phi));
-  } else {
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+    return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) &&
+           magnitude_inside_plain_window(phi) && !std::signbit(phi);
+  else
     return false;
-  }
 }
 
 }  // namespace contact::detail
