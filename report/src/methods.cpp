@@ -12,6 +12,10 @@ std::string name_of(method m) {
     case method::batch: return "batch";
     case method::boost_quadratic: return "boost_quadratic";
     case method::eigen_companion: return "eigen_companion";
+    case method::boost_newton: return "boost_newton";
+    case method::boost_halley: return "boost_halley";
+    case method::boost_toms748: return "boost_toms748";
+    case method::practitioner_newton: return "practitioner_newton";
     default: return std::string(contact::name_of(*library_algorithm(m)));
   }
 }

@@ -1,5 +1,6 @@
 // The algorithms of the report's tables: the library's three
-// (contact::algorithm), its batch API and two peers.
+// (contact::algorithm), its batch API, two quadratic peers (peers.hpp) and
+// four iterative peers (iterative_peers.hpp).
 #pragma once
 
 #include <optional>
@@ -11,9 +12,22 @@
 
 namespace report {
 
-enum class method { textbook, stable, newton, batch, boost_quadratic, eigen_companion };
-inline constexpr method all_methods[] = {method::textbook, method::stable,          method::newton,
-                                         method::batch,    method::boost_quadratic, method::eigen_companion};
+enum class method {
+  textbook,
+  stable,
+  newton,
+  batch,
+  boost_quadratic,
+  eigen_companion,
+  boost_newton,
+  boost_halley,
+  boost_toms748,
+  practitioner_newton
+};
+inline constexpr method all_methods[] = {method::textbook,        method::stable,          method::newton,
+                                         method::batch,           method::boost_quadratic, method::eigen_companion,
+                                         method::boost_newton,    method::boost_halley,    method::boost_toms748,
+                                         method::practitioner_newton};
 
 // The library algorithm that `m` is, or nothing for the report's own (batch and the peers).
 constexpr std::optional<contact::algorithm> library_algorithm(method m) {
@@ -22,6 +36,18 @@ constexpr std::optional<contact::algorithm> library_algorithm(method m) {
     case method::stable: return contact::algorithm::stable;
     case method::newton: return contact::algorithm::newton;
     default: return std::nullopt;
+  }
+}
+
+// The methods that iterate on the residual: the report counts their iterations.
+constexpr bool iterative(method m) {
+  switch (m) {
+    case method::newton:
+    case method::boost_newton:
+    case method::boost_halley:
+    case method::boost_toms748:
+    case method::practitioner_newton: return true;
+    default: return false;
   }
 }
 

@@ -119,7 +119,19 @@ std::string format_inf(const accuracy_result& a) {
          " overflow)";
 }
 
+std::string format_iterations(const accuracy_result& a) {
+  if (a.iterations_max < 0) return "—";
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.2f / %ld", a.iterations_mean, a.iterations_max);
+  return buffer;
+}
+
 namespace {
+
+json iterations_json(const accuracy_result& a) {
+  if (a.iterations_max < 0) return nullptr;
+  return {{"mean", number(a.iterations_mean)}, {"max", a.iterations_max}};
+}
 
 std::string parameters_of(const family& f) {
   std::string out;
@@ -192,6 +204,29 @@ void write_double_speed(std::ostream& md, const std::vector<std::string>& algori
     headline["double_ns_per_solve"][algorithm] = per_scene;
   }
   md << "\n";
+}
+
+// The iterative methods' iteration counts over the accuracy samples.
+void write_double_iterations(std::ostream& md, const std::vector<std::string>& algorithms,
+                             const std::vector<const scene_result*>& scenes, json& headline) {
+  std::vector<std::string> iterating;
+  for (const auto& algorithm : algorithms)
+    if (const auto m = method_named(algorithm); m && iterative(*m)) iterating.push_back(algorithm);
+  if (iterating.empty()) return;
+  md << "### Iterations in double: mean / max over the accuracy samples\n\n";
+  scene_columns(md, scenes, false);
+  for (const auto& algorithm : iterating) {
+    md << "| " << algorithm << " |";
+    json per_scene = json::object();
+    for (const auto* r : scenes) {
+      const auto* a = accuracy_of(*r, double_type, algorithm);
+      md << " " << (a ? format_iterations(*a) : "—") << " |";
+      if (a && a->iterations_max >= 0) per_scene[r->s.name] = iterations_json(*a);
+    }
+    md << "\n";
+    headline["double_iterations"][algorithm] = per_scene;
+  }
+  md << "\nWhat each counts is in the Method section.\n\n";
 }
 
 // The stable form in every other registered type that some scene ran it in.
@@ -283,6 +318,7 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, j
   if (!algorithms.empty() && !with_runs.empty()) {
     write_double_accuracy(md, algorithms, with_runs, headline);
     write_double_speed(md, algorithms, with_runs, headline);
+    write_double_iterations(md, algorithms, with_runs, headline);
   }
   write_stable_by_type(md, with_runs, headline);
   for (const auto& r : scenes)
@@ -297,8 +333,9 @@ void write_method(std::ostream& md, const run_info& info) {
         "in exact rational arithmetic, the root computed at 256 bits or more (four times the widest type's precision "
         "in the run) and certified by the sign change of the exact residual of (A.2) around it. An error is "
         "|computed - exact| in units in the last place of the type at the exact root (`reference::ulp_error`); a "
-        "correctly rounded result is at most 0.5 ulp off. The inputs are doubles, so every type solves exactly the "
-        "same numbers.\n"
+        "correctly rounded result is at most 0.5 ulp off. The inputs are drawn in double and, in a run with a type "
+        "narrower than double (float), rounded to it first (saturating at its largest finite value), so that every "
+        "type of a run solves, and the reference certifies, exactly the same numbers.\n"
         "- **Statistics.** Maximum, 99th percentile and median (nearest rank) of the ulp errors of all samples of a "
         "run; a NaN result counts as an infinite error and is counted under NaN. *inf* counts infinite results; "
         "\"(k overflow)\" says how many of them are right, because the exact root rounds to infinity in the type. *compl.* counts complementarity violations: a "
@@ -314,6 +351,31 @@ void write_method(std::ostream& md, const run_info& info) {
         "companion matrix), each applied to the quadratic of the case: (A.9) (1+phi) s^2 + (u - 2 phi dy) s + phi "
         "dy^2 = 0 for impact (smaller root), (A.23) s^2 + u s - phi dy^2 = 0 for release (larger root) and the linear "
         "(A.18) for contact; the case is decided by the printed criteria, as the textbook path does.\n"
+        "- **Iterative peers**, what a user without the closed form runs on the residual R(s) of (A.2), each as its "
+        "users call it. All start at the kink s = dy, where the sign of R decides the side of the root and so the "
+        "case (the library newton's rule); none moves its answer onto that side, so *compl.* shows what that costs. "
+        "`boost_newton` and `boost_halley` are Boost.Math `tools::newton_raphson_iterate` and `halley_iterate` "
+        "(Boost 1.74) with the digits of Boost's examples, 0.6 and 0.4 of the type's (each Newton step doubles the "
+        "correct digits, each Halley step triples them) and max_iter 50, on R and its derivatives on the root's "
+        "side; `boost_toms748` is `tools::toms748_solve` with `eps_tolerance<T>` of the type's digits and max_iter "
+        "50, answering the midpoint of the bracket it returns. The Boost peers search the bracket the kink gives: "
+        "[-u, dy] below it (R(-u) <= 0 there), [dy, |dy| + 2 b] above it, b a bound of the root: max(0, -u) on the "
+        "free side, max(0, -u) + sqrt(phi) dy on the release side and, for u > 0, phi dy^2 / u if smaller "
+        "(`bracket_from_kink` in `report/src/iterative_peers.hpp`). A failure Boost reports by throwing (no sign "
+        "change within the type's range) gives NaN, and so do toms748_solve's and halley_iterate's steps once "
+        "products of residuals overflow (|R| beyond about 1e154 in double). `practitioner_newton` is plain Newton "
+        "as physical-modelling code runs it: from the kink, with the slope of the side the iterate is on, stopping "
+        "when a step is at most 1e-12 of |s| or after 20 steps, without a bracket (the same 1e-12 in every type: "
+        "in float only a zero step meets it).\n"
+        "- **Iterations** (mean / max over the accuracy samples): for `newton` the residuals it evaluates after the "
+        "one at the kink (`contact::newton_iterate`'s count); for the Boost peers the evaluations of R (with its "
+        "derivatives) inside Boost, counted by the function Boost calls: newton_raphson_iterate and halley_iterate "
+        "evaluate again at their start s = dy, toms748_solve at both ends of the bracket; the evaluation at the kink "
+        "that chose the bracket is not counted, and when it found the root (R(dy) = 0) Boost is not called (0). "
+        "This is the count Boost writes back into max_iter, except where halley_iterate searches beyond its "
+        "bracket: there Boost's count wraps below zero and it writes back more than it evaluated, and the search "
+        "can run past max_iter. For `practitioner_newton` its Newton steps, one evaluation each, the first at the "
+        "kink.\n"
         "- **newton** is the library's safeguarded Newton iteration on the residual (the baseline the closed form "
         "replaces); **textbook** is the appendix's summary with its misprints corrected and nothing else; **stable** "
         "is `contact::solve_stable`; **batch** is `contact::solve_batch` (`contact/batch.hpp`), whose results equal "
@@ -353,8 +415,8 @@ void write_results(std::ostream& md, const scene_result& r,
   bool as_double = false;
   for (const auto& a : r.accuracy) as_double = as_double || a.max_ulp_as_double >= 0;
   md << "| type | algorithm | samples | max ulp | p99 ulp | median ulp |" << (as_double ? " max ulp as double |" : "")
-     << " NaN | inf | compl. | wrong case | ns/solve | spread | inputs × reps |\n|---|---|---:|---:|---:|---:|"
-     << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---|---:|\n";
+     << " NaN | inf | compl. | wrong case | iterations mean / max | ns/solve | spread | inputs × reps |\n"
+     << "|---|---|---:|---:|---:|---:|" << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---:|---|---:|\n";
   for (const auto& [type, algorithm] : rows) {
     const auto* a = accuracy_of(r, type, algorithm);
     const auto* t = timing_of(r, type, algorithm);
@@ -363,9 +425,10 @@ void write_results(std::ostream& md, const scene_result& r,
       md << a->samples << " | " << format_ulp(a->ulps.max) << " | " << format_ulp(a->ulps.p99) << " | "
          << format_ulp(a->ulps.median) << " | ";
       if (as_double) md << format_ulp(a->max_ulp_as_double) << " | ";
-      md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | ";
+      md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | "
+         << format_iterations(*a) << " | ";
     } else {
-      md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | ";
+      md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | — | ";
     }
     if (t && !t->ns.empty())
       md << format_ns(t->median) << " | " << format_ns(t->min) << "–" << format_ns(t->max) << " | " << t->inputs << " × "
@@ -477,6 +540,7 @@ json scene_json(const scene_result& r) {
                              {"inf_overflow", a.inf_overflow},
                              {"complementarity_violations", a.complementarity},
                              {"wrong_case", a.wrong_case},
+                             {"iterations", iterations_json(a)},
                              {"reference_bits", a.reference_bits},
                              {"family_max_ulp", family_max},
                              {"histogram", histogram}});
@@ -546,6 +610,10 @@ void write_csv(std::ostream& csv, const std::vector<scene_result>& scenes) {
       row("accuracy", a.type, a.algorithm, "inf_overflow", std::to_string(a.inf_overflow));
       row("accuracy", a.type, a.algorithm, "complementarity_violations", std::to_string(a.complementarity));
       row("accuracy", a.type, a.algorithm, "wrong_case", std::to_string(a.wrong_case));
+      if (a.iterations_max >= 0) {
+        row("accuracy", a.type, a.algorithm, "iterations_mean", csv_number(a.iterations_mean));
+        row("accuracy", a.type, a.algorithm, "iterations_max", std::to_string(a.iterations_max));
+      }
       for (std::size_t i = 0; i < a.family_max.size(); ++i)
         if (a.family_max[i] >= 0)
           row("accuracy", a.type, a.algorithm, "max_ulp[" + r.s.families[i].name + "]", csv_number(a.family_max[i]));
@@ -581,13 +649,14 @@ void write_raw(const fs::path& directory, const std::vector<scene_result>& scene
     fs::create_directories(dir);
     for (const auto& a : r.accuracy) {
       std::ofstream out(dir / ("accuracy_" + a.type + "_" + a.algorithm + ".csv"));
-      out << "index,family,u,dy,phi,s,case,ulp_error\n";
+      out << "index,family,u,dy,phi,s,case,ulp_error,iterations\n";  // iterations empty: the method does not iterate
       char buffer[200];
       for (std::size_t i = 0; i < a.errors.size(); ++i) {
         const auto& in = a.inputs[i];
         std::snprintf(buffer, sizeof buffer, "%zu,%s,%a,%a,%a,", i, r.s.families[static_cast<std::size_t>(in.family)].name.c_str(),
                       in.u, in.dy, in.phi);
-        out << buffer << a.s_text[i] << "," << a.which[i] << "," << csv_number(a.errors[i]) << "\n";
+        out << buffer << a.s_text[i] << "," << a.which[i] << "," << csv_number(a.errors[i]) << ","
+            << (a.iterations.empty() ? std::string() : std::to_string(a.iterations[i])) << "\n";
       }
     }
     for (const auto& t : r.timing) {

@@ -21,6 +21,7 @@ std::string format_ns(double ns);
 std::string format_ratio(double ratio);
 std::string format_energy(double relative);
 std::string format_inf(const accuracy_result& a);
+std::string format_iterations(const accuracy_result& a);  // "mean / max", or "—" for a method that does not iterate
 
 // Writes everything into `directory` (created if need be). Returns false if
 // gnuplot failed (the rest is written anyway).

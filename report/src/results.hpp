@@ -34,12 +34,19 @@ struct accuracy_result {
   std::vector<double> family_max;  // max ulp per family of the scene (-1: family not in this run)
   std::vector<long> histogram = std::vector<long>(histogram_bins, 0);
   int reference_bits = 0;
+  // iterations of an iterative method (methods.hpp) over the samples (-1: the method does not iterate)
+  double iterations_mean = -1;
+  long iterations_max = -1;
   // the raw measurements (kept only with --raw)
   std::vector<double> errors;
   std::vector<int> which;
+  std::vector<int> iterations;  // empty for a method that does not iterate
   std::vector<std::string> s_text;
   std::vector<input> inputs;
 };
+
+// Sets the mean and maximum iteration count of `a` from one count per sample.
+void count_iterations(const std::vector<int>& counts, accuracy_result& a);
 
 struct timing_result {
   std::string type, algorithm;

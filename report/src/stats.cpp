@@ -43,6 +43,18 @@ summary summarize(std::vector<double> errors) {
   return s;
 }
 
+void count_iterations(const std::vector<int>& counts, accuracy_result& a) {
+  if (counts.empty()) return;
+  double total = 0;
+  long most = 0;
+  for (int k : counts) {
+    total += k;
+    most = std::max<long>(most, k);
+  }
+  a.iterations_mean = total / static_cast<double>(counts.size());
+  a.iterations_max = most;
+}
+
 progress::progress(std::string label, long total)
     : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()), last_(start_) {}
 

@@ -19,6 +19,9 @@ using reference_list = std::vector<contact::reference::certified>;
 struct type_ops {
   std::string name;  // contact::type_name<T>
   int (*digits)();   // significand bits (MPFR: at the current default precision)
+  // The inputs as T holds them, back in double: rounded (and saturated at its
+  // largest finite value) for a type narrower than double, unchanged for the others.
+  std::vector<input> (*as_held)(const std::vector<input>& inputs);
   // Solves `inputs` with each of the run's methods and scores the results
   // against `references`, the certified roots of the same inputs.
   void (*accuracy)(const run& r, const std::vector<input>& inputs, const reference_list& references,

@@ -19,6 +19,7 @@
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
+#include "iterative_peers.hpp"
 #include "peers.hpp"
 #include "results.hpp"
 #include "type_ops.hpp"
@@ -49,9 +50,31 @@ contact::solution<T> solve_one(method m, const T& u, const T& dy, const T& phi) 
     case method::eigen_companion:
       if constexpr (runs_in<T>(method::eigen_companion)) return peers::solve_eigen(u, dy, phi);
       break;  // unsupported() keeps it out of the scenes
+    case method::boost_newton: return peers::solve_boost_newton(u, dy, phi).answer;
+    case method::boost_halley: return peers::solve_boost_halley(u, dy, phi).answer;
+    case method::boost_toms748: return peers::solve_boost_toms748(u, dy, phi).answer;
+    case method::practitioner_newton: return peers::solve_practitioner_newton(u, dy, phi).answer;
     default: break;
   }
   return {std::numeric_limits<T>::quiet_NaN(), contact::contact_case::invalid};
+}
+
+// The same answer as solve_one, with the iteration count of an iterative
+// method (-1 for the others). The timings call solve_one, which does not
+// keep the count.
+template <class T>
+peers::iterated<T> solve_counted(method m, const T& u, const T& dy, const T& phi) {
+  switch (m) {
+    case method::newton: {
+      const auto result = contact::newton_iterate(u, dy, phi);  // what contact::solve's newton returns
+      return {result.answer, result.iterations};
+    }
+    case method::boost_newton: return peers::solve_boost_newton(u, dy, phi);
+    case method::boost_halley: return peers::solve_boost_halley(u, dy, phi);
+    case method::boost_toms748: return peers::solve_boost_toms748(u, dy, phi);
+    case method::practitioner_newton: return peers::solve_practitioner_newton(u, dy, phi);
+    default: return {solve_one(m, u, dy, phi), -1};
+  }
 }
 
 template <class T>
@@ -66,7 +89,29 @@ inline constexpr bool wider_than_double =
 
 // ---- accuracy ----------------------------------------------------------------------
 
-// The inputs as T (exactly: they are doubles).
+// x as T holds it: rounded, and saturated at T's largest finite value, since
+// an infinite input is invalid (and the reference takes finite input only).
+template <class T>
+double held_in(double x) {
+  using std::isinf;
+  const T rounded(x);
+  if (!isinf(rounded)) return to_double(rounded);
+  const T largest = (std::numeric_limits<T>::max)();
+  return to_double(x > 0 ? largest : T(-largest));
+}
+
+template <class T>
+std::vector<input> as_held(const std::vector<input>& inputs) {
+  std::vector<input> held = inputs;
+  for (auto& in : held) {
+    in.u = held_in<T>(in.u);
+    in.dy = held_in<T>(in.dy);
+    in.phi = held_in<T>(in.phi);
+  }
+  return held;
+}
+
+// The inputs as T (exactly: measure.cpp has rounded them to the run's narrowest type).
 template <class T>
 struct columns {
   std::vector<T> u, dy, phi;
@@ -84,22 +129,24 @@ template <class T>
 struct solved {
   std::vector<T> s;
   std::vector<int> which;
+  std::vector<int> iterations;  // -1 for a method that does not iterate
 };
 
 // Every input solved by `m`; batch in one call, as its users call it.
 template <class T>
 solved<T> solve_all(method m, const columns<T>& in) {
   const std::size_t n = in.size();
-  solved<T> out{std::vector<T>(n), std::vector<int>(n)};
+  solved<T> out{std::vector<T>(n), std::vector<int>(n), std::vector<int>(n, -1)};
   if (m == method::batch) {
     contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), out.s.data(), out.which.data(),
                          static_cast<std::ptrdiff_t>(n));
     return out;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const auto result = solve_one(m, in.u[i], in.dy[i], in.phi[i]);
-    out.s[i] = result.s;
-    out.which[i] = static_cast<int>(result.which);
+    const auto result = solve_counted(m, in.u[i], in.dy[i], in.phi[i]);
+    out.s[i] = result.answer.s;
+    out.which[i] = static_cast<int>(result.answer.which);
+    out.iterations[i] = result.iterations;
   }
   return out;
 }
@@ -152,9 +199,11 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
     }
     if constexpr (wider_than_double<T>) a.max_ulp_as_double = worst_as_double;
     a.ulps = summarize(errors);
+    if (iterative(m)) count_iterations(results.iterations, a);  // the others keep -1
     if (keep_raw) {
       a.errors = std::move(errors);
       a.which = std::move(results.which);
+      if (iterative(m)) a.iterations = std::move(results.iterations);
       a.inputs = inputs;
       for (const T& s : results.s) a.s_text.push_back(contact::round_trip_text(s));
     }
@@ -333,7 +382,8 @@ int digits() {
 
 template <class T>
 type_ops make_ops() {
-  return {std::string(contact::type_name<T>), &digits<T>, &accuracy<T>, &register_timings<T>, &simulate<T>};
+  return {std::string(contact::type_name<T>), &digits<T>, &as_held<T>, &accuracy<T>, &register_timings<T>,
+          &simulate<T>};
 }
 
 }  // namespace report::typed

@@ -24,6 +24,8 @@
 #include "contact/batch.hpp"
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
+#include "iterative_peers.hpp"
+#include "methods.hpp"
 #include "output.hpp"
 #include "peers.hpp"
 #include "results.hpp"
@@ -69,15 +71,24 @@ ratio = { log10 = [0, 6] }
 
 [[run]]
 types = ["double"]
-algorithms = ["textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion"]
+algorithms = ["textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion",
+              "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
 checks = ["accuracy", "timing"]
 timing_inputs = 256
 repetitions = 3
 min_time = 0.005
 
 [[run]]
+types = ["float"]
+algorithms = ["stable", "newton", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
+checks = ["accuracy", "timing"]
+timing_inputs = 256
+repetitions = 2
+min_time = 0.005
+
+[[run]]
 types = ["long_double", "cpp_bin_float_50"]
-algorithms = ["stable"]
+algorithms = ["stable", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
 checks = ["accuracy", "timing"]
 samples = 40
 timing_inputs = 32
@@ -86,7 +97,7 @@ min_time = 0.005
 
 [[run]]
 types = ["double"]
-algorithms = ["textbook", "stable"]
+algorithms = ["textbook", "stable", "boost_halley", "practitioner_newton"]
 checks = ["energy"]
 
 [oscillator]
@@ -176,6 +187,7 @@ struct raw_sample {
   std::string s;
   int which;
   double ulps;
+  int iterations;  // -1: the method does not iterate (the column is empty)
 };
 
 std::vector<raw_sample> read_raw(const fs::path& p) {
@@ -183,15 +195,37 @@ std::vector<raw_sample> read_raw(const fs::path& p) {
   std::ifstream in(p);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "index,family,u,dy,phi,s,case,ulp_error");
+  EXPECT_EQ(line, "index,family,u,dy,phi,s,case,ulp_error,iterations");
   while (std::getline(in, line)) {
-    const auto c = split(line, ',');
-    EXPECT_EQ(c.size(), 8u) << line;
-    if (c.size() != 8) continue;
+    auto c = split(line, ',');
+    if (c.size() == 8 && line.back() == ',') c.emplace_back();  // getline drops an empty last cell
+    EXPECT_EQ(c.size(), 9u) << line;
+    if (c.size() != 9) continue;
     rows.push_back({c[1], std::strtod(c[2].c_str(), nullptr), std::strtod(c[3].c_str(), nullptr),
-                    std::strtod(c[4].c_str(), nullptr), c[5], std::stoi(c[6]), std::strtod(c[7].c_str(), nullptr)});
+                    std::strtod(c[4].c_str(), nullptr), c[5], std::stoi(c[6]), std::strtod(c[7].c_str(), nullptr),
+                    c[8].empty() ? -1 : std::stoi(c[8])});
   }
   return rows;
+}
+
+// The (type, algorithm) pairs that the small scene measures accuracy and timing of, as "type/algorithm".
+const std::vector<std::string> iterative_peers = {"boost_newton", "boost_halley", "boost_toms748",
+                                                  "practitioner_newton"};
+
+std::set<std::string> measured_in_small_scene() {
+  std::set<std::string> out;
+  for (const char* algorithm : {"textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion"})
+    out.insert(std::string("double/") + algorithm);
+  for (const auto& peer : iterative_peers)
+    for (const char* type : {"double", "float", "long_double", "cpp_bin_float_50"}) out.insert(type + ("/" + peer));
+  for (const char* type : {"float", "long_double", "cpp_bin_float_50"}) out.insert(std::string(type) + "/stable");
+  out.insert("float/newton");
+  return out;
+}
+
+bool is_iterative(const std::string& algorithm) {
+  const auto m = report::method_named(algorithm);
+  return m && report::iterative(*m);
 }
 
 bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
@@ -237,12 +271,10 @@ TEST_F(tool, only_what_the_scene_names_is_measured) {
   ASSERT_EQ(status_, 0) << stderr_;
   std::set<std::string> seen;
   for (const auto& a : scene()["accuracy"]) seen.insert(a["type"].get<std::string>() + "/" + a["algorithm"].get<std::string>());
-  const std::set<std::string> expected = {"double/textbook", "double/stable", "double/newton", "double/batch",
-                                          "double/boost_quadratic", "double/eigen_companion", "long_double/stable",
-                                          "cpp_bin_float_50/stable"};
+  const std::set<std::string> expected = measured_in_small_scene();
   EXPECT_EQ(seen, expected);
   EXPECT_EQ(scene()["timing"].size(), expected.size());
-  EXPECT_EQ(scene()["energy"].size(), 2u);
+  EXPECT_EQ(scene()["energy"].size(), 4u);
 }
 
 // Every accuracy figure is what the raw samples give, and the raw samples are
@@ -250,17 +282,19 @@ TEST_F(tool, only_what_the_scene_names_is_measured) {
 TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
   ASSERT_EQ(status_, 0) << stderr_;
   const auto rows = table(markdown_, "| type | algorithm | samples |");
-  ASSERT_EQ(rows.size(), 8u);
+  ASSERT_EQ(rows.size(), measured_in_small_scene().size());
   for (const auto& a : scene()["accuracy"]) {
     const std::string type = a["type"], algorithm = a["algorithm"];
     SCOPED_TRACE(type + " " + algorithm);
     const auto raw = read_raw(work / "out" / "raw" / "small" / ("accuracy_" + type + "_" + algorithm + ".csv"));
     ASSERT_EQ(static_cast<long>(raw.size()), a["samples"].get<long>());
     std::vector<double> errors;
+    std::vector<int> iterations;
     long nan = 0, inf = 0, violations = 0;
     std::map<std::string, double> family_max;
     for (const auto& r : raw) {
       errors.push_back(r.ulps);
+      if (r.iterations >= 0) iterations.push_back(r.iterations);
       const double s = std::strtod(r.s.c_str(), nullptr);
       // wider types print decimals that may lie beyond double's range: read inf and nan as text
       nan += r.s.find("nan") != std::string::npos;
@@ -279,6 +313,18 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
       EXPECT_EQ(violations, a["complementarity_violations"].get<long>());
     }
     for (const auto& [family, worst] : family_max) EXPECT_TRUE(same(worst, value_of(a["family_max_ulp"][family])));
+    // the iteration counts: one per sample for an iterative method, none otherwise
+    report::accuracy_result counted;
+    if (is_iterative(algorithm)) {
+      ASSERT_EQ(iterations.size(), raw.size());
+      report::count_iterations(iterations, counted);
+      ASSERT_TRUE(a["iterations"].is_object()) << a.dump();
+      EXPECT_DOUBLE_EQ(value_of(a["iterations"]["mean"]), counted.iterations_mean);
+      EXPECT_EQ(a["iterations"]["max"].get<long>(), counted.iterations_max);
+    } else {
+      EXPECT_TRUE(iterations.empty());
+      EXPECT_TRUE(a["iterations"].is_null());
+    }
 
     // The raw s is what the named algorithm gives, and its error is what the reference says.
     if (type == "double") {
@@ -287,16 +333,32 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
       for (std::size_t i = 0; i < raw.size(); i += 7) {
         const auto& r = raw[i];
         contact::solution<double> mine{};
+        int my_iterations = -1;
+        const auto iterated = [&](const auto& result) {
+          my_iterations = result.iterations;
+          return result.answer;
+        };
         switch (*method) {
           case report::method::textbook: mine = contact::solve_textbook(r.u, r.dy, r.phi); break;
-          case report::method::newton: mine = contact::solve_newton(r.u, r.dy, r.phi); break;
+          case report::method::newton: mine = iterated(contact::newton_iterate(r.u, r.dy, r.phi)); break;
           case report::method::boost_quadratic: mine = report::peers::solve_boost(r.u, r.dy, r.phi); break;
           case report::method::eigen_companion: mine = report::peers::solve_eigen(r.u, r.dy, r.phi); break;
+          case report::method::boost_newton: mine = iterated(report::peers::solve_boost_newton(r.u, r.dy, r.phi)); break;
+          case report::method::boost_halley: mine = iterated(report::peers::solve_boost_halley(r.u, r.dy, r.phi)); break;
+          case report::method::boost_toms748:
+            mine = iterated(report::peers::solve_boost_toms748(r.u, r.dy, r.phi));
+            break;
+          case report::method::practitioner_newton:
+            mine = iterated(report::peers::solve_practitioner_newton(r.u, r.dy, r.phi));
+            break;
           default: mine = contact::solve_stable(r.u, r.dy, r.phi); break;  // batch equals stable bit for bit
         }
         const double s = std::strtod(r.s.c_str(), nullptr);
         EXPECT_TRUE(same(mine.s, s)) << std::hexfloat << r.u << " " << r.dy << " " << r.phi;
         EXPECT_EQ(static_cast<int>(mine.which), r.which);
+        EXPECT_EQ(my_iterations, r.iterations);
+        if (*method == report::method::newton)  // the count is of the answer that contact::solve gives
+          EXPECT_TRUE(same(contact::solve_newton(r.u, r.dy, r.phi).s, s));
         const auto exact = contact::reference::solve<double>(r.u, r.dy, r.phi);
         EXPECT_TRUE(same(contact::reference::ulp_error<double>(s, exact), r.ulps)) << std::hexfloat << r.u;
       }
@@ -311,12 +373,13 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
       EXPECT_EQ(row[3], report::format_ulp(summary.max));
       EXPECT_EQ(row[4], report::format_ulp(summary.p99));
       EXPECT_EQ(row[5], report::format_ulp(summary.median));
-      const bool wide = row.size() == 14;  // with the "max ulp as double" column
+      const bool wide = row.size() == 15;  // with the "max ulp as double" column
       const std::size_t k = wide ? 7 : 6;
       EXPECT_EQ(row[k], std::to_string(nan));
       EXPECT_EQ(row[k + 1].substr(0, row[k + 1].find(' ')), std::to_string(inf));
       EXPECT_EQ(row[k + 2], std::to_string(a["complementarity_violations"].get<long>()));
       EXPECT_EQ(row[k + 3], std::to_string(a["wrong_case"].get<long>()));
+      EXPECT_EQ(row[k + 4], is_iterative(algorithm) ? report::format_iterations(counted) : "—");
     }
     EXPECT_TRUE(found);
   }
@@ -360,7 +423,7 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
   ASSERT_EQ(status_, 0) << stderr_;
   // headline: max ulp in double per algorithm
   const auto head = table(markdown_, "| algorithm | small | worst |");
-  ASSERT_EQ(head.size(), 6u);
+  ASSERT_EQ(head.size(), 10u);
   for (const auto& row : head)
     for (const auto& a : scene()["accuracy"])
       if (a["type"] == "double" && a["algorithm"] == row[0]) {
@@ -400,7 +463,7 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
   EXPECT_DOUBLE_EQ(value_of(batch["batch_to_floor"]), streamed["batch"] / streamed["floor"]);
   // energy: the maximum is the maximum of the plotted series; the table shows it
   const auto energy_rows = table(markdown_, "| type | algorithm | steps in contact |");
-  ASSERT_EQ(energy_rows.size(), 2u);
+  ASSERT_EQ(energy_rows.size(), 4u);
   for (const auto& e : scene()["energy"]) {
     double worst = 0;
     for (const auto& x : e["plot_max_relative_error"]) worst = std::max(worst, value_of(x));
@@ -410,6 +473,57 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
       if (row[0] == e["type"] && row[1] == e["algorithm"]) {
         EXPECT_EQ(row[3], report::format_energy(worst));
       }
+  }
+}
+
+// results.csv has the iteration counts of exactly the iterative methods, as results.json has them.
+TEST_F(tool, iteration_counts_appear_in_csv_and_json) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  std::ifstream csv(work / "out" / "results.csv");
+  std::string line;
+  std::map<std::string, std::string> figures;
+  while (std::getline(csv, line)) {
+    const auto c = split(line, ',');
+    if (c.size() == 6) figures[c[1] + "/" + c[2] + "/" + c[3] + "/" + c[4]] = c[5];
+  }
+  long iterating = 0;
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string key = "accuracy/" + a["type"].get<std::string>() + "/" + a["algorithm"].get<std::string>();
+    SCOPED_TRACE(key);
+    if (!is_iterative(a["algorithm"])) {
+      EXPECT_EQ(figures.count(key + "/iterations_mean"), 0u);
+      EXPECT_EQ(figures.count(key + "/iterations_max"), 0u);
+      continue;
+    }
+    ++iterating;
+    ASSERT_EQ(figures.count(key + "/iterations_mean"), 1u);
+    EXPECT_EQ(std::strtod(figures[key + "/iterations_mean"].c_str(), nullptr), value_of(a["iterations"]["mean"]));
+    EXPECT_EQ(figures[key + "/iterations_max"], std::to_string(a["iterations"]["max"].get<long>()));
+  }
+  EXPECT_EQ(iterating, 1 + 4 * 4 + 1);  // newton in double and float, each peer in four types
+  // the headline has the double counts of every iterative method
+  const auto& headline = results_["headline"]["double_iterations"];
+  for (const char* algorithm : {"newton", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"})
+    EXPECT_TRUE(headline[algorithm]["small"].is_object()) << algorithm;
+  EXPECT_NE(markdown_.find("### Iterations in double: mean / max"), std::string::npos);
+}
+
+// On the physical family every iterative peer gives a finite error in every
+// type it ran in, and the Pareto chart plots it.
+TEST_F(tool, the_iterative_peers_give_finite_errors_on_physical_inputs) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string pareto = read(work / "out" / "plots" / "pareto_small.dat");
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string type = a["type"], algorithm = a["algorithm"];
+    if (std::find(iterative_peers.begin(), iterative_peers.end(), algorithm) == iterative_peers.end()) continue;
+    SCOPED_TRACE(type + " " + algorithm);
+    const double tanpura = value_of(a["family_max_ulp"]["tanpura"]);
+    EXPECT_TRUE(std::isfinite(tanpura)) << tanpura;
+    EXPECT_GE(value_of(a["iterations"]["mean"]), 1);
+    // halley_iterate's search beyond its bracket can run past max_iter (peers_test.cpp)
+    if (algorithm != "boost_halley")
+      EXPECT_LE(a["iterations"]["max"].get<long>(), algorithm == "practitioner_newton" ? 20 : 50);
+    EXPECT_NE(pareto.find("# " + type + " " + algorithm + "\n"), std::string::npos);
   }
 }
 

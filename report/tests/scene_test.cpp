@@ -191,6 +191,33 @@ TEST(scene, type_names_are_the_registry_s_and_an_unknown_one_is_an_error) {
   EXPECT_NE(report::unsupported(report::method::eigen_companion, "mpfr"), "");
 }
 
+// The iterative peers are templates on T that run in every registered type:
+// a run may name each of them in any type, and they are the iterative methods.
+TEST(scene, the_iterative_peers_are_accepted_in_every_registered_type) {
+  for (const std::string name : {"boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"}) {
+    const auto m = report::method_named(name);
+    ASSERT_TRUE(m.has_value()) << name;
+    EXPECT_EQ(report::name_of(*m), name);
+    EXPECT_TRUE(report::iterative(*m)) << name;
+    for (std::string_view type : contact::type_names) {
+      SCOPED_TRACE(name + " in " + std::string(type));
+      EXPECT_EQ(report::unsupported(*m, type), "");
+      std::string text = edited("[\"stable\", \"textbook\"]", "[\"stable\", \"" + name + "\"]");
+      const std::string types = "types = [\"double\", \"float128\"]";
+      text.replace(text.find(types), types.size(), "types = [\"" + std::string(type) + "\"]");
+      const auto s = report::parse_scene_text(text, "good.toml");
+      EXPECT_EQ(s.runs[0].types, std::vector<std::string>{std::string(type)});
+      EXPECT_EQ(s.runs[0].methods, (std::vector<report::method>{report::method::stable, *m}));
+    }
+  }
+  EXPECT_TRUE(report::iterative(report::method::newton));
+  for (auto m : {report::method::textbook, report::method::stable, report::method::batch,
+                 report::method::boost_quadratic, report::method::eigen_companion})
+    EXPECT_FALSE(report::iterative(m)) << report::name_of(m);
+  // every method's name leads back to it
+  for (auto m : report::all_methods) EXPECT_EQ(report::method_named(report::name_of(m)), m);
+}
+
 TEST(scene, values_are_checked) {
   expect_error(edited("samples = 10", "samples = \"ten\""), "samples = \"ten\"", "'samples' must be an integer");
   expect_error(edited("samples = 10", "samples = 0"), "samples = 0", "must lie in [1, 10000000]");
