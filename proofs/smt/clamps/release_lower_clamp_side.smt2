@@ -18,6 +18,12 @@
 (assert (solves u dy phi t))
 (assert (<= s dy))
 (assert (> g 0.0))
+; hints
+(assert (=> (<= t dy) (= (* t (+ (* (+ 1.0 phi) t) u (- (* 2.0 phi dy)))) 0.0)))
+(assert (not (= t 0.0)))
+; then at t <= dy, t /= 0, (A.2) is (A.18), whose root is > dy in case (A.32)
+(assert (=> (<= t dy) (= (+ (* (+ 1.0 phi) t) u (- (* 2.0 phi dy))) 0.0)))
+(assert (> t dy))
 ; goal
 (assert (not (and (> t dy)
                   (or (<= (abs (- (+ dy g) t)) (abs (- s t)))
