@@ -176,7 +176,8 @@ TEST(ContactSolve, StableDoubleStaysWithinBoundOverTheWholeRange) {
 // The committed hard cases of the correctly rounded mode, through the CLI: each
 // line's u dy phi gives exactly its expected_s and expected_case.
 TEST(ContactSolve, RoundedGivesTheExpectedStepOnEveryHardCase) {
-  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact", "near_ties", "range_edges"}) {
+  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact", "near_ties", "range_edges",
+                           "subnormal_phi"}) {
     std::ifstream file(std::string(CONTACT_ROUNDED_HARD_CASES) + "/" + name + ".txt");
     ASSERT_TRUE(file) << name;
     std::string input;

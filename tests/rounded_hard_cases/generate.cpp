@@ -2,7 +2,7 @@
 // style: inputs whose exact root is a rounding boundary (a midpoint between two
 // doubles) or lies very close to one, and roots at the edges of double's range.
 //
-//     rounded-hard-cases DIR     (writes DIR/exact_ties_contact.txt, ...)
+//     rounded-hard-cases DIR     (writes DIR/exact_ties_contact.txt, ..., DIR/subnormal_phi.txt)
 //
 // Each line is "u dy phi expected_s expected_case", C99 hex floats; expected_s
 // is the certified reference root rounded to nearest (ties to even) with
@@ -81,7 +81,7 @@ class writer {
     if (!std::isfinite(u) || !std::isfinite(dy) || !std::isfinite(phi) || phi < 0) return false;
     const auto exact = contact::reference::solve(u, dy, phi, bits);
     if (!exact.is_certified || !accept(exact.s)) return false;
-    const double s = contact::reference::rounded_to_double(exact.s);
+    const double s = mpfr_get_d(contact::reference::rounded_root(exact, u, dy, phi).get(), MPFR_RNDN);
     out_ << hex(u) << ' ' << hex(dy) << ' ' << hex(phi) << ' ' << hex(s) << ' ' << static_cast<int>(exact.which)
          << '\n';
     ++count_;
@@ -309,6 +309,40 @@ void range_edges(const std::string& dir) {
   }
 }
 
+// (A.31) with a subnormal phi = k 2^-1074 (k odd) and dy = (M / k) 2^e, M an
+// odd 54-bit multiple of k: 2 phi dy = M 2^(e-1073) is a midpoint, and the root
+// (2 phi dy - u) / (1 + phi) lies about 2^-1074 of itself from it, on the side
+// that -u - phi 2 phi dy picks: far below the reference's working precision,
+// so only the exact sign of R at the midpoint tells the side (the reference
+// root at `bits` bits is the midpoint itself). u is 0, subnormal or small
+// normal, of either sign. The first three are the inputs of the shared
+// families that exposed this (whole_range, double).
+void subnormal_phi(const std::string& dir) {
+  writer w(dir + "/subnormal_phi.txt",
+           std::string(format) + "# (A.31) with subnormal phi: roots within about 2^-1074 of themselves from a midpoint\n");
+  const auto near = [](const real& root) {
+    const double d = distance_to_midpoint(root);
+    return d >= 0 && d < 0x1p-40;
+  };
+  w.add(-0x0.13fccb69b00b1p-1022, 0x1.a6fb214114dfcp+477, 0x0.0000000000007p-1022, near);
+  w.add(-0x0.000002e718d59p-1022, 0x1.b17938d742fdp+714, 0x0.0000000000025p-1022, near);
+  w.add(0.0, 0x1.32bd8d44d0684p+951, 0x0.0000000000007p-1022, near);
+  std::mt19937_64 rng(36);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  while (w.count() < 40) {
+    const std::uint64_t k = 2 * (1 + rng() % 64) + 1;
+    std::uint64_t m = (std::uint64_t(1) << 53) + (rng() >> 11);  // 54 bits
+    m -= m % k;                                                   // a multiple of k ...
+    if (m % 2 == 0) m += k;                                       // ... and odd
+    if (m >> 54) continue;
+    const double dy = exact_double(m / k, int(rng() % 1200) - 500);
+    const double u_choices[] = {0.0, tiny * double(1 + rng() % 100000), -tiny * double(1 + rng() % 100000),
+                                std::ldexp(double(rng() >> 11), -1060 - int(rng() % 20)),
+                                -std::ldexp(double(rng() >> 11), -1060 - int(rng() % 20))};
+    w.add(u_choices[rng() % 5], dy, tiny * double(k), near);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -322,5 +356,6 @@ int main(int argc, char** argv) {
   exact_ties_impact(dir);
   near_ties(dir);
   range_edges(dir);
+  subnormal_phi(dir);
   return 0;
 }
