@@ -6,7 +6,7 @@
 # present), -fsanitize=fuzzer,address,undefined, into /tmp/build-fuzz.
 #
 # Writes to $OUT, for each target T of differential, cancellation, invariants,
-# high_precision:
+# high_precision, rounded:
 #   contact_T                  the fuzzer
 #   contact_T.dict             its dictionary of interesting values
 #   contact_T.options          max_len and dict, for OSS-Fuzz
@@ -40,7 +40,7 @@ fi
 OUT=${OUT:-/tmp/build-fuzz}
 WORK=${WORK:-$OUT/work}
 JOBS=${JOBS:-2}
-targets=${CONTACT_FUZZ_TARGETS:-"differential cancellation invariants high_precision"}
+targets=${CONTACT_FUZZ_TARGETS:-"differential cancellation invariants high_precision rounded"}
 mkdir -p "$OUT" "$WORK/obj"
 
 # --- quadmath.h: contact/types.hpp (the scalar types' names, float128) needs
@@ -86,8 +86,8 @@ else
   defines+=(-DCONTACT_CLAIMED_BOUNDS='"contact_claimed_bounds.txt"')
 fi
 
-declare -A max_len=([differential]=24 [cancellation]=24 [invariants]=27 [high_precision]=48)
-declare -A dict=([differential]=double [cancellation]=double [invariants]=invariants [high_precision]=high_precision)
+declare -A max_len=([differential]=24 [cancellation]=24 [invariants]=27 [high_precision]=48 [rounded]=24)
+declare -A dict=([differential]=double [cancellation]=double [invariants]=invariants [high_precision]=high_precision [rounded]=double)
 
 compile_flags=(-std=gnu++20 $CXXFLAGS "${defines[@]}" "${includes[@]}")
 stamp="$CXX ${compile_flags[*]} $LIB_FUZZING_ENGINE ${libs[*]}"

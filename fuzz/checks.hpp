@@ -18,6 +18,8 @@
 //                   non-decreasing and 2 phi-Lipschitz in dy, and the cases
 //                   follow each other in the only possible order.
 //   high_precision  the differential check for long double and float128.
+//   rounded         solve_rounded in double and float, bit for bit against
+//                   the reference root rounded to the type (exact case too).
 #pragma once
 
 #include <algorithm>
@@ -28,6 +30,7 @@
 #include "common.hpp"
 #include "contact/detail/float_tools.hpp"
 #include "contact/detail/window.hpp"
+#include "contact/rounded.hpp"
 
 namespace contact::fuzz {
 
@@ -471,15 +474,78 @@ inline void check_invariants(const std::uint8_t* data, std::size_t size) {
   for (int i = 0; i + 1 < sweep_points; ++i) check_pair(request, points[i], points[i + 1], bound);
 }
 
+// ---- rounded ---------------------------------------------------------------------
+
+// What a rounded check saw: the exact case and whether the exact decision ran
+// (the libFuzzer target feeds both back, so that campaigns reach the slow path
+// in every case).
+struct rounded_result {
+  contact_case which = contact_case::invalid;
+  bool exact_decision = false;
+};
+
+inline constexpr int rounded_buckets = 1 + 4 * 2;
+inline int rounded_bucket(const rounded_result& r) {
+  if (r.which == contact_case::invalid) return 0;
+  return 1 + (static_cast<int>(r.which) - 1) * 2 + int(r.exact_decision);
+}
+
+// solve_rounded's answer is the reference root rounded to nearest (ties to
+// even) in T, bit for bit, and its case the exact one. A root of exactly 0 has
+// no sign to round ((A.29) gives -u, (A.31) +0): there any zero passes.
+template <class T>
+rounded_result rounded_check(const input<T>& x) {
+  using std::isnan;
+  using std::signbit;
+  statistics& st = stats();
+  ++st.inputs;
+  const auto traced = detail::solve_rounded_traced(x.u, x.dy, x.phi);
+  const solution<T>& got = traced.result;
+  if (!is_valid(x)) {
+    ++st.invalid_inputs;
+    if (!(isnan(got.s) && got.which == contact_case::invalid))
+      fail("rounded", "rounded did not reject an invalid input",
+           describe_input(x) + "  got s = " + hex(got.s) + ", case " + case_label(got.which) + "\n");
+    return {};
+  }
+  const reference::certified exact = certified_root("rounded", x);
+  st.record(std::string(type_name<T>) + " rounded", error_of(got, exact, x.dy), x, got.which);
+  const reference::real expected = reference::rounded_root(exact, x.u, x.dy, x.phi);
+  const T want = T(mpfr_get_d(expected.get(), MPFR_RNDN));  // exact: expected has T's precision and range
+  const bool zero_root = mpfr_zero_p(exact.s.get()) != 0;
+  const bool same = zero_root ? got.s == 0 : (got.s == want && signbit(got.s) == signbit(want));
+  if (!same || got.which != exact.which)
+    fail("rounded", same ? "rounded chose the wrong case" : "rounded is not the correctly rounded root",
+         describe_input(x) + "  expected s = " + hex(want) + "   (exact " + exact.s.to_string(40) + "), case " +
+             case_label(exact.which) + "\n  got      s = " + hex(got.s) + ", case " + case_label(got.which) +
+             (traced.exact_decision ? " (exact decision)" : " (fast path)") + "\n");
+  return {exact.which, traced.exact_decision};
+}
+
+// 24 bytes: u, dy, phi as raw doubles; the first 4 bytes of each 8 also as a raw
+// float, so that float's inputs are reached bit by bit as well.
+struct rounded_pair_result {
+  rounded_result in_double, in_float;
+};
+
+inline rounded_pair_result check_rounded(const std::uint8_t* data, std::size_t size) {
+  const input<double> x{take_double(data, size, 0), take_double(data, size, 8), take_double(data, size, 16)};
+  float f[3];
+  for (int i = 0; i < 3; ++i) take_bytes(data, size, std::size_t(8 * i), &f[i], sizeof(float));
+  return {rounded_check<double>(x), rounded_check<float>(input<float>{f[0], f[1], f[2]})};
+}
+
 // ---- by name --------------------------------------------------------------------
 
-inline constexpr const char* target_names[] = {"differential", "cancellation", "invariants", "high_precision"};
+inline constexpr const char* target_names[] = {"differential", "cancellation", "invariants", "high_precision",
+                                               "rounded"};
 
 inline bool run_check(const std::string& target, const std::uint8_t* data, std::size_t size) {
   if (target == "differential") check_differential(data, size);
   else if (target == "cancellation") check_cancellation(data, size);
   else if (target == "invariants") check_invariants(data, size);
   else if (target == "high_precision") check_high_precision(data, size);
+  else if (target == "rounded") check_rounded(data, size);
   else return false;
   return true;
 }

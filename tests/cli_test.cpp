@@ -173,5 +173,50 @@ TEST(ContactSolve, StableDoubleStaysWithinBoundOverTheWholeRange) {
   EXPECT_LE(worst, stable_bound_any());
 }
 
+// The committed hard cases of the correctly rounded mode, through the CLI: each
+// line's u dy phi gives exactly its expected_s and expected_case.
+TEST(ContactSolve, RoundedGivesTheExpectedStepOnEveryHardCase) {
+  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact", "near_ties", "range_edges",
+                           "subnormal_phi"}) {
+    std::ifstream file(std::string(CONTACT_ROUNDED_HARD_CASES) + "/" + name + ".txt");
+    ASSERT_TRUE(file) << name;
+    std::string input;
+    std::vector<std::string> expected;
+    for (std::string line; std::getline(file, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream fields(line);
+      std::string u, dy, phi, s, which;
+      fields >> u >> dy >> phi >> s >> which;
+      input += u + " " + dy + " " + phi + "\n";
+      expected.push_back(s + " " + which);
+    }
+    const auto r = run_cli("--algo rounded --type double", input);
+    EXPECT_EQ(r.status, 0) << name;
+    EXPECT_EQ(r.err, "") << name;
+    const auto out = lines_of(r.out);
+    ASSERT_EQ(out.size(), expected.size()) << name;
+    for (std::size_t i = 0; i < out.size(); ++i) EXPECT_EQ(out[i], expected[i]) << name << " line " << i + 1;
+  }
+}
+
+TEST(ContactSolve, RoundedWorksForEachTypeThatHasIt) {
+  for (const char* type : {"float", "double", "long_double", "float128"}) {
+    const auto r = run_cli(std::string("--algo rounded --type ") + type, "3 1 3\n");
+    EXPECT_EQ(r.status, 0) << type;
+    EXPECT_TRUE(r.out == "0x1.8p-1 3\n" || r.out == "0.75 3\n") << type << ": " << r.out;
+  }
+}
+
+// The multiprecision types have no correctly rounded mode: a clear error and
+// status 2, never an answer from another algorithm.
+TEST(ContactSolve, RoundedIsRefusedForTypesWithoutIt) {
+  for (const char* type : {"cpp_bin_float_50", "cpp_bin_float_100", "mpfr"}) {
+    const auto r = run_cli(std::string("--algo rounded --type ") + type, "3 1 3\n");
+    EXPECT_EQ(r.status, 2) << type;
+    EXPECT_EQ(r.out, "") << type;
+    EXPECT_NE(r.err.find("--algo rounded is not available for --type " + std::string(type)), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace contact::testing

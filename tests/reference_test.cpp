@@ -35,6 +35,25 @@ TEST(Reference, EachCaseMatchesItsClosedFormByHand) {
   EXPECT_EQ(reference::rounded_to_double(reference::solve(1.0, 1.0, 12.0).s), 3.0);    // (A.32) u > 0: 24 / (1 + 7)
 }
 
+// Rounding the working-precision root to double rounds twice: with a subnormal
+// phi, (A.31)'s root lies about 2^-432 of itself above the midpoint 2 phi dy,
+// so at 256 bits it is the midpoint, and ties to even would take the neighbour
+// below. rounded_root decides on the exact sign of R at the midpoint instead.
+TEST(Reference, RoundedRootDecidesARootNearerAMidpointThanTheWorkingPrecision) {
+  const double u = -0x0.13fccb69b00b1p-1022, dy = 0x1.a6fb214114dfcp+477, phi = 0x0.0000000000007p-1022;
+  const auto exact = reference::solve(u, dy, phi);
+  EXPECT_EQ(reference::rounded_to_double(exact.s), 0x1.721bbd18f243cp-593);  // the midpoint, rounded to even
+  EXPECT_EQ(mpfr_get_d(reference::rounded_root(exact, u, dy, phi).get(), MPFR_RNDN), 0x1.721bbd18f243dp-593);
+}
+
+// An exact tie stays a tie: R at the midpoint is zero and the even neighbour is taken
+// ((A.31) with phi = 1: s = (2 dy - u) / 2 = 3 2^-1075, between the subnormals 2^-1074 and 2^-1073).
+TEST(Reference, RoundedRootTakesTheEvenNeighbourOfAnExactTie) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const auto exact = reference::solve(tiny, 2 * tiny, 1.0);
+  EXPECT_EQ(mpfr_get_d(reference::rounded_root(exact, tiny, 2 * tiny, 1.0).get(), MPFR_RNDN), 2 * tiny);
+}
+
 // The certificate tests the exact residual on both sides of s: a root above
 // the true one fails the lower end, a root below it fails the upper end.
 TEST(Reference, CertificateRejectsARootAboveTheTrueOne) { EXPECT_FALSE(certifies(1.5, 3.0, 1.0, 3.0)); }

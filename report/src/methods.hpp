@@ -1,4 +1,4 @@
-// The algorithms of the report's tables: the library's three
+// The algorithms of the report's tables: the library's four
 // (contact::algorithm), its batch API, two quadratic peers (peers.hpp) and
 // four iterative peers (iterative_peers.hpp).
 #pragma once
@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "contact/cases.hpp"
+#include "contact/rounded.hpp"
 
 namespace report {
 
@@ -16,6 +17,7 @@ enum class method {
   textbook,
   stable,
   newton,
+  rounded,
   batch,
   boost_quadratic,
   eigen_companion,
@@ -25,7 +27,7 @@ enum class method {
   practitioner_newton
 };
 inline constexpr method all_methods[] = {method::textbook,        method::stable,          method::newton,
-                                         method::batch,           method::boost_quadratic, method::eigen_companion,
+                                         method::rounded,         method::batch,           method::boost_quadratic, method::eigen_companion,
                                          method::boost_newton,    method::boost_halley,    method::boost_toms748,
                                          method::practitioner_newton};
 
@@ -35,6 +37,7 @@ constexpr std::optional<contact::algorithm> library_algorithm(method m) {
     case method::textbook: return contact::algorithm::textbook;
     case method::stable: return contact::algorithm::stable;
     case method::newton: return contact::algorithm::newton;
+    case method::rounded: return contact::algorithm::rounded;
     default: return std::nullopt;
   }
 }
@@ -55,11 +58,18 @@ std::string name_of(method m);
 std::optional<method> method_named(std::string_view name);
 
 // Whether the report runs `m` in T. The Eigen peer (peers.hpp) calls
-// std::isnan on T, which exists for the built-in floating-point types only.
+// std::isnan on T, which exists for the built-in floating-point types only;
+// the correctly rounded mode exists for the IEEE types only (contact::rounded_available).
 template <class T>
 constexpr bool runs_in(method m) {
-  return m != method::eigen_companion || std::is_floating_point_v<T>;
+  if (m == method::eigen_companion) return std::is_floating_point_v<T>;
+  if (m == method::rounded) return contact::rounded_available<T>;
+  return true;
 }
+
+// Whether `m` promises complementarity only weakly: the correctly rounded root
+// may be dy itself where the exact root lies within half an ulp of it.
+constexpr bool weakly_complementary(method m) { return m == method::rounded; }
 
 // Why `m` cannot run in the registered type named `type` (contact/types.hpp),
 // or empty if it can; a name the registry does not hold throws std::invalid_argument.

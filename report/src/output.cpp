@@ -119,6 +119,13 @@ std::string format_inf(const accuracy_result& a) {
          " overflow)";
 }
 
+std::string format_slow_path(const accuracy_result& a) {
+  if (a.slow_path_share < 0) return "—";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g%%", 100 * a.slow_path_share);
+  return buffer;
+}
+
 std::string format_iterations(const accuracy_result& a) {
   if (a.iterations_max < 0) return "—";
   char buffer[48];
@@ -339,8 +346,10 @@ void write_method(std::ostream& md, const run_info& info) {
         "- **Statistics.** Maximum, 99th percentile and median (nearest rank) of the ulp errors of all samples of a "
         "run; a NaN result counts as an infinite error and is counted under NaN. *inf* counts infinite results; "
         "\"(k overflow)\" says how many of them are right, because the exact root rounds to infinity in the type. *compl.* counts complementarity violations: a "
-        "result that does not lie on the side of dy that its own case claims (`lies_on_its_side`). *wrong case* "
-        "counts results whose case differs from the exact one.\n"
+        "result that does not lie on the side of dy that its own case claims (`lies_on_its_side`; for `rounded`, "
+        "which promises it only weakly, s = dy is on both sides). *wrong case* "
+        "counts results whose case differs from the exact one. *slow path* (for `rounded` only) is the share of "
+        "samples for which the fast approximation's rounding test failed and the exact decision ran.\n"
         "- **Timing.** Google Benchmark, in process, single-threaded: one benchmark per (type, algorithm) loops over "
         "an array of the scene's inputs, shuffled so that the cases mix (its length is in the table). Each is warmed "
         "(Google Benchmark's warm-up and iteration calibration), then repeated; the table gives the median over the "
@@ -378,7 +387,8 @@ void write_method(std::ostream& md, const run_info& info) {
         "kink.\n"
         "- **newton** is the library's safeguarded Newton iteration on the residual (the baseline the closed form "
         "replaces); **textbook** is the appendix's summary with its misprints corrected and nothing else; **stable** "
-        "is `contact::solve_stable`; **batch** is `contact::solve_batch` (`contact/batch.hpp`), whose results equal "
+        "is `contact::solve_stable`; **rounded** is `contact::solve_rounded`, the exact root rounded to nearest "
+        "(ties to even) in the type (float, double, long double and float128 only); **batch** is `contact::solve_batch` (`contact/batch.hpp`), whose results equal "
         "stable's bit for bit (tested).\n"
         "- **Types.** The registered scalar types of `contact/types.hpp` ("
      << join(contact::type_names)
@@ -415,8 +425,8 @@ void write_results(std::ostream& md, const scene_result& r,
   bool as_double = false;
   for (const auto& a : r.accuracy) as_double = as_double || a.max_ulp_as_double >= 0;
   md << "| type | algorithm | samples | max ulp | p99 ulp | median ulp |" << (as_double ? " max ulp as double |" : "")
-     << " NaN | inf | compl. | wrong case | iterations mean / max | ns/solve | spread | inputs × reps |\n"
-     << "|---|---|---:|---:|---:|---:|" << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---:|---|---:|\n";
+     << " NaN | inf | compl. | wrong case | iterations mean / max | slow path | ns/solve | spread | inputs × reps |\n"
+     << "|---|---|---:|---:|---:|---:|" << (as_double ? "---:|" : "") << "---:|---:|---:|---:|---:|---:|---:|---|---:|\n";
   for (const auto& [type, algorithm] : rows) {
     const auto* a = accuracy_of(r, type, algorithm);
     const auto* t = timing_of(r, type, algorithm);
@@ -426,9 +436,9 @@ void write_results(std::ostream& md, const scene_result& r,
          << format_ulp(a->ulps.median) << " | ";
       if (as_double) md << format_ulp(a->max_ulp_as_double) << " | ";
       md << a->nan << " | " << format_inf(*a) << " | " << a->complementarity << " | " << a->wrong_case << " | "
-         << format_iterations(*a) << " | ";
+         << format_iterations(*a) << " | " << format_slow_path(*a) << " | ";
     } else {
-      md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | — | ";
+      md << "— | — | — | — | " << (as_double ? "— | " : "") << "— | — | — | — | — | — | ";
     }
     if (t && !t->ns.empty())
       md << format_ns(t->median) << " | " << format_ns(t->min) << "–" << format_ns(t->max) << " | " << t->inputs << " × "
@@ -541,6 +551,7 @@ json scene_json(const scene_result& r) {
                              {"complementarity_violations", a.complementarity},
                              {"wrong_case", a.wrong_case},
                              {"iterations", iterations_json(a)},
+                             {"slow_path_share", a.slow_path_share < 0 ? json(nullptr) : number(a.slow_path_share)},
                              {"reference_bits", a.reference_bits},
                              {"family_max_ulp", family_max},
                              {"histogram", histogram}});
@@ -614,6 +625,7 @@ void write_csv(std::ostream& csv, const std::vector<scene_result>& scenes) {
         row("accuracy", a.type, a.algorithm, "iterations_mean", csv_number(a.iterations_mean));
         row("accuracy", a.type, a.algorithm, "iterations_max", std::to_string(a.iterations_max));
       }
+      if (a.slow_path_share >= 0) row("accuracy", a.type, a.algorithm, "slow_path_share", csv_number(a.slow_path_share));
       for (std::size_t i = 0; i < a.family_max.size(); ++i)
         if (a.family_max[i] >= 0)
           row("accuracy", a.type, a.algorithm, "max_ulp[" + r.s.families[i].name + "]", csv_number(a.family_max[i]));

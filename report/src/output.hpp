@@ -22,6 +22,7 @@ std::string format_ratio(double ratio);
 std::string format_energy(double relative);
 std::string format_inf(const accuracy_result& a);
 std::string format_iterations(const accuracy_result& a);  // "mean / max", or "—" for a method that does not iterate
+std::string format_slow_path(const accuracy_result& a);  // "12.3%" of samples on the exact decision, or "—" for a method other than rounded
 
 // Writes everything into `directory` (created if need be). Returns false if
 // gnuplot failed (the rest is written anyway).

@@ -37,6 +37,9 @@ struct accuracy_result {
   // iterations of an iterative method (methods.hpp) over the samples (-1: the method does not iterate)
   double iterations_mean = -1;
   long iterations_max = -1;
+  // the share of samples that took the exact decision (the slow path) of the
+  // correctly rounded mode (-1: not the rounded method)
+  double slow_path_share = -1;
   // the raw measurements (kept only with --raw)
   std::vector<double> errors;
   std::vector<int> which;

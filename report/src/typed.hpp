@@ -130,6 +130,7 @@ struct solved {
   std::vector<T> s;
   std::vector<int> which;
   std::vector<int> iterations;  // -1 for a method that does not iterate
+  long slow_path = 0;           // rounded: how many took the exact decision
 };
 
 // Every input solved by `m`; batch in one call, as its users call it.
@@ -141,6 +142,17 @@ solved<T> solve_all(method m, const columns<T>& in) {
     contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), out.s.data(), out.which.data(),
                          static_cast<std::ptrdiff_t>(n));
     return out;
+  }
+  if constexpr (contact::rounded_available<T>) {
+    if (m == method::rounded) {  // the same answers as solve_one gives, with the path each took
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto traced = contact::detail::solve_rounded_traced(in.u[i], in.dy[i], in.phi[i]);
+        out.s[i] = traced.result.s;
+        out.which[i] = static_cast<int>(traced.result.which);
+        out.slow_path += traced.exact_decision;
+      }
+      return out;
+    }
   }
   for (std::size_t i = 0; i < n; ++i) {
     const auto result = solve_counted(m, in.u[i], in.dy[i], in.phi[i]);
@@ -154,7 +166,7 @@ solved<T> solve_all(method m, const columns<T>& in) {
 // One result's ulp error, added into the counts of `a`; `worst_as_double`
 // gathers the error of the result rounded to double (wider types only).
 template <class T>
-double score(accuracy_result& a, const T& s, int which, const T& dy, int family,
+double score(accuracy_result& a, method m, const T& s, int which, const T& dy, int family,
              const contact::reference::certified& exact, double& worst_as_double) {
   using std::isinf;
   using std::isnan;
@@ -168,7 +180,8 @@ double score(accuracy_result& a, const T& s, int which, const T& dy, int family,
   }
   const auto c = static_cast<contact::contact_case>(which);
   if (c != exact.which) ++a.wrong_case;
-  if (!contact::lies_on_its_side(c, s, dy)) ++a.complementarity;
+  const bool on_its_side = contact::lies_on_its_side(c, s, dy) || (weakly_complementary(m) && s == dy);
+  if (!on_its_side) ++a.complementarity;
   double& family_worst = a.family_max[static_cast<std::size_t>(family)];
   family_worst = std::isnan(error) ? infinity : std::max(family_worst, error);
   if constexpr (wider_than_double<T>) {
@@ -194,12 +207,13 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
     std::vector<double> errors(n);
     double worst_as_double = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      errors[i] = score(a, results.s[i], results.which[i], in.dy[i], inputs[i].family, references[i], worst_as_double);
+      errors[i] = score(a, m, results.s[i], results.which[i], in.dy[i], inputs[i].family, references[i], worst_as_double);
       if ((i & 1023) == 0) bar.update(static_cast<long>(i));
     }
     if constexpr (wider_than_double<T>) a.max_ulp_as_double = worst_as_double;
     a.ulps = summarize(errors);
     if (iterative(m)) count_iterations(results.iterations, a);  // the others keep -1
+    if (m == method::rounded) a.slow_path_share = double(results.slow_path) / double(std::max<std::size_t>(n, 1));
     if (keep_raw) {
       a.errors = std::move(errors);
       a.which = std::move(results.which);

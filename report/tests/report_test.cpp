@@ -71,7 +71,7 @@ ratio = { log10 = [0, 6] }
 
 [[run]]
 types = ["double"]
-algorithms = ["textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion",
+algorithms = ["textbook", "stable", "newton", "rounded", "batch", "boost_quadratic", "eigen_companion",
               "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
 checks = ["accuracy", "timing"]
 timing_inputs = 256
@@ -80,7 +80,7 @@ min_time = 0.005
 
 [[run]]
 types = ["float"]
-algorithms = ["stable", "newton", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
+algorithms = ["stable", "newton", "rounded", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
 checks = ["accuracy", "timing"]
 timing_inputs = 256
 repetitions = 2
@@ -89,6 +89,15 @@ min_time = 0.005
 [[run]]
 types = ["long_double", "cpp_bin_float_50"]
 algorithms = ["stable", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
+checks = ["accuracy", "timing"]
+samples = 40
+timing_inputs = 32
+repetitions = 2
+min_time = 0.005
+
+[[run]]
+types = ["long_double"]
+algorithms = ["rounded"]
 checks = ["accuracy", "timing"]
 samples = 40
 timing_inputs = 32
@@ -214,8 +223,9 @@ const std::vector<std::string> iterative_peers = {"boost_newton", "boost_halley"
 
 std::set<std::string> measured_in_small_scene() {
   std::set<std::string> out;
-  for (const char* algorithm : {"textbook", "stable", "newton", "batch", "boost_quadratic", "eigen_companion"})
+  for (const char* algorithm : {"textbook", "stable", "newton", "rounded", "batch", "boost_quadratic", "eigen_companion"})
     out.insert(std::string("double/") + algorithm);
+  for (const char* type : {"float", "long_double"}) out.insert(std::string(type) + "/rounded");
   for (const auto& peer : iterative_peers)
     for (const char* type : {"double", "float", "long_double", "cpp_bin_float_50"}) out.insert(type + ("/" + peer));
   for (const char* type : {"float", "long_double", "cpp_bin_float_50"}) out.insert(std::string(type) + "/stable");
@@ -299,7 +309,9 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
       // wider types print decimals that may lie beyond double's range: read inf and nan as text
       nan += r.s.find("nan") != std::string::npos;
       inf += r.s.find("inf") != std::string::npos;
-      if (type == "double" && !contact::lies_on_its_side(static_cast<contact::contact_case>(r.which), s, r.dy)) ++violations;
+      const bool weakly = algorithm == "rounded" && s == r.dy;  // rounded promises complementarity weakly
+      if (type == "double" && !contact::lies_on_its_side(static_cast<contact::contact_case>(r.which), s, r.dy) && !weakly)
+        ++violations;
       double& worst = family_max[r.family];
       worst = std::max(worst, std::isnan(r.ulps) ? INFINITY : r.ulps);
     }
@@ -340,6 +352,7 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
         };
         switch (*method) {
           case report::method::textbook: mine = contact::solve_textbook(r.u, r.dy, r.phi); break;
+          case report::method::rounded: mine = contact::solve_rounded(r.u, r.dy, r.phi); break;
           case report::method::newton: mine = iterated(contact::newton_iterate(r.u, r.dy, r.phi)); break;
           case report::method::boost_quadratic: mine = report::peers::solve_boost(r.u, r.dy, r.phi); break;
           case report::method::eigen_companion: mine = report::peers::solve_eigen(r.u, r.dy, r.phi); break;
@@ -373,13 +386,16 @@ TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
       EXPECT_EQ(row[3], report::format_ulp(summary.max));
       EXPECT_EQ(row[4], report::format_ulp(summary.p99));
       EXPECT_EQ(row[5], report::format_ulp(summary.median));
-      const bool wide = row.size() == 15;  // with the "max ulp as double" column
+      const bool wide = row.size() == 16;  // with the "max ulp as double" column
       const std::size_t k = wide ? 7 : 6;
       EXPECT_EQ(row[k], std::to_string(nan));
       EXPECT_EQ(row[k + 1].substr(0, row[k + 1].find(' ')), std::to_string(inf));
       EXPECT_EQ(row[k + 2], std::to_string(a["complementarity_violations"].get<long>()));
       EXPECT_EQ(row[k + 3], std::to_string(a["wrong_case"].get<long>()));
       EXPECT_EQ(row[k + 4], is_iterative(algorithm) ? report::format_iterations(counted) : "—");
+      report::accuracy_result slow;
+      if (algorithm == "rounded") slow.slow_path_share = value_of(a["slow_path_share"]);
+      EXPECT_EQ(row[k + 5], report::format_slow_path(slow));
     }
     EXPECT_TRUE(found);
   }
@@ -423,7 +439,7 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
   ASSERT_EQ(status_, 0) << stderr_;
   // headline: max ulp in double per algorithm
   const auto head = table(markdown_, "| algorithm | small | worst |");
-  ASSERT_EQ(head.size(), 10u);
+  ASSERT_EQ(head.size(), 11u);  // every double algorithm of the small scene, rounded included
   for (const auto& row : head)
     for (const auto& a : scene()["accuracy"])
       if (a["type"] == "double" && a["algorithm"] == row[0]) {
@@ -506,6 +522,46 @@ TEST_F(tool, iteration_counts_appear_in_csv_and_json) {
   for (const char* algorithm : {"newton", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"})
     EXPECT_TRUE(headline[algorithm]["small"].is_object()) << algorithm;
   EXPECT_NE(markdown_.find("### Iterations in double: mean / max"), std::string::npos);
+}
+
+// The rounded rows: every result correctly rounded (at most half an ulp, the
+// exact case), complementarity weakly, and the share of samples that took the
+// exact decision in csv and json, recounted here from the raw inputs; the
+// other methods have no such share.
+TEST_F(tool, the_rounded_rows_are_correctly_rounded_and_give_their_slow_path_share) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  std::ifstream csv(work / "out" / "results.csv");
+  std::map<std::string, std::string> figures;
+  for (std::string line; std::getline(csv, line);) {
+    const auto c = split(line, ',');
+    if (c.size() == 6) figures[c[1] + "/" + c[2] + "/" + c[3] + "/" + c[4]] = c[5];
+  }
+  long rounded_rows = 0;
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string type = a["type"], algorithm = a["algorithm"];
+    const std::string key = "accuracy/" + type + "/" + algorithm + "/slow_path_share";
+    SCOPED_TRACE(key);
+    if (algorithm != "rounded") {
+      EXPECT_TRUE(a["slow_path_share"].is_null());
+      EXPECT_EQ(figures.count(key), 0u);
+      continue;
+    }
+    ++rounded_rows;
+    EXPECT_LE(value_of(a["max_ulp"]), 0.5);
+    EXPECT_EQ(a["wrong_case"].get<long>(), 0);
+    EXPECT_EQ(a["complementarity_violations"].get<long>(), 0);
+    const double share = value_of(a["slow_path_share"]);
+    ASSERT_EQ(figures.count(key), 1u);
+    EXPECT_EQ(std::strtod(figures[key].c_str(), nullptr), share);
+    if (type == "double") {
+      const auto raw = read_raw(work / "out" / "raw" / "small" / ("accuracy_" + type + "_" + algorithm + ".csv"));
+      long slow = 0;
+      for (const auto& r : raw) slow += contact::detail::solve_rounded_traced(r.u, r.dy, r.phi).exact_decision;
+      EXPECT_EQ(share, double(slow) / double(raw.size()));
+      EXPECT_GT(slow, 0);  // the wild family reaches beyond the fast path's window
+    }
+  }
+  EXPECT_EQ(rounded_rows, 3);
 }
 
 // On the physical family every iterative peer gives a finite error in every

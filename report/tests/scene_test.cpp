@@ -191,6 +191,17 @@ TEST(scene, type_names_are_the_registry_s_and_an_unknown_one_is_an_error) {
   EXPECT_NE(report::unsupported(report::method::eigen_companion, "mpfr"), "");
 }
 
+// The correctly rounded mode runs in the IEEE types only; a scene that names it
+// for another type is refused with the reason.
+TEST(scene, rounded_runs_in_the_ieee_types_only) {
+  for (const char* type : {"float", "double", "long_double", "float128"})
+    EXPECT_EQ(report::unsupported(report::method::rounded, type), "") << type;
+  for (const char* type : {"cpp_bin_float_50", "cpp_bin_float_100", "mpfr"})
+    EXPECT_EQ(report::unsupported(report::method::rounded, type), "rounded runs in float, double, long_double and float128 only")
+        << type;
+  EXPECT_FALSE(report::iterative(report::method::rounded));
+}
+
 // The iterative peers are templates on T that run in every registered type:
 // a run may name each of them in any type, and they are the iterative methods.
 TEST(scene, the_iterative_peers_are_accepted_in_every_registered_type) {

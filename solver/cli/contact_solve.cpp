@@ -4,7 +4,8 @@
 // hex float for float and double, a round-trip decimal for wider types; case
 // 1-4 is (A.29)-(A.32)); a blank or comment line is echoed as it is; a bad
 // line gives "error REASON" and a message with its line number on stderr.
-// Exit status 1 if any line was bad, 2 for bad options or an unreadable file.
+// Exit status 1 if any line was bad, 2 for bad options or an unreadable file
+// (and for --algo rounded with a type that has no correctly rounded mode).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -163,7 +164,19 @@ int main(int argc, char** argv) {
   }
   std::istream& in = file.empty() ? std::cin : file_stream;
   int status = 0;
-  if (!contact::with_type(type_name, [&](auto zero) { status = run<decltype(zero)>(in, method); })) {
+  const bool known = contact::with_type(type_name, [&](auto zero) {
+    using T = decltype(zero);
+    if constexpr (!contact::rounded_available<T>) {
+      if (method == contact::algorithm::rounded) {  // refused, never replaced by another algorithm
+        std::cerr << "contact-solve: --algo rounded is not available for --type " << type_name
+                  << " (correct rounding is implemented for float, double, long_double and float128)\n";
+        status = 2;
+        return;
+      }
+    }
+    status = run<T>(in, method);
+  });
+  if (!known) {
     std::cerr << "contact-solve: unknown type '" << type_name << "' (known: " << known_types << ")\n";
     return 2;
   }

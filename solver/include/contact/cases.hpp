@@ -57,12 +57,15 @@ struct solution {
   contact_case which;  // the case that produced it
 };
 
-enum class algorithm { textbook, stable, newton };
+// rounded: the exact root rounded to nearest in T (rounded.hpp); for the types
+// of contact::rounded_available only.
+enum class algorithm { textbook, stable, newton, rounded };
 
 constexpr std::string_view name_of(algorithm a) {
   switch (a) {
     case algorithm::textbook: return "textbook";
     case algorithm::stable: return "stable";
+    case algorithm::rounded: return "rounded";
     default: return "newton";
   }
 }

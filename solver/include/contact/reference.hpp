@@ -289,6 +289,59 @@ double ulp_error(const T& computed, const certified& exact) {
   return mpfr_get_d(difference.get(), MPFR_RNDU);
 }
 
+// x rounded to nearest (ties to even) in the format of T: T's precision, its
+// gradual underflow and its overflow to infinity. Rounded to T's precision in
+// MPFR's wide range first, then brought into T's range with the ternary value,
+// so that nothing is rounded twice.
+template <class T>
+real rounded_to(const real& x) {
+  const int p = contact::detail::precision_of<T>();
+  real result(p);
+  int inexact = mpfr_set(result.get(), x.get(), MPFR_RNDN);
+  const mpfr_exp_t old_emin = mpfr_get_emin(), old_emax = mpfr_get_emax();
+  // T's range in MPFR's convention (significand in [1/2, 1)): the least subnormal is 2^(emin - 1)
+  mpfr_set_emin(std::numeric_limits<T>::min_exponent - p + 1);
+  mpfr_set_emax(std::numeric_limits<T>::max_exponent);
+  inexact = mpfr_check_range(result.get(), inexact, MPFR_RNDN);
+  mpfr_subnormalize(result.get(), inexact, MPFR_RNDN);
+  mpfr_set_emin(old_emin);
+  mpfr_set_emax(old_emax);
+  return result;
+}
+
+// The exact root rounded to nearest (ties to even) in T. Rounding s itself
+// would round twice: a root within 2^-(bits-8) of a midpoint of T (with a
+// subnormal phi, (A.31)'s root lies 2^-1074 of itself from a midpoint when
+// 2 phi dy is one) can be rounded onto the midpoint at `bits` bits and then
+// to the even neighbour, whichever side the root is on. So: when both ends of
+// the certified bracket round alike, the root does too (rounding is monotonic);
+// otherwise the bracket, far narrower than an ulp, holds the one midpoint m
+// between the two, and the exact sign of R(m) decides (R is increasing: the
+// root lies above m exactly when R(m) < 0); R(m) = 0 is a tie, m itself rounds
+// to the even neighbour.
+template <class T>
+real rounded_root(const certified& exact, const T& u, const T& dy, const T& phi) {
+  real low = rounded_to<T>(exact.lower), high = rounded_to<T>(exact.upper);
+  if (mpfr_equal_p(low.get(), high.get())) return low;
+  const int p = contact::detail::precision_of<T>();
+  real midpoint(p + 8);
+  if (mpfr_inf_p(high.get())) {  // the overflow threshold max + ulp(max)/2 = 2^emax (1 - 2^-(p+1))
+    mpfr_set_ui_2exp(midpoint.get(), 1, std::numeric_limits<T>::max_exponent, MPFR_RNDN);
+    real half_ulp(p + 8);
+    mpfr_set_ui_2exp(half_ulp.get(), 1, std::numeric_limits<T>::max_exponent - p - 1, MPFR_RNDN);
+    mpfr_sub(midpoint.get(), midpoint.get(), half_ulp.get(), MPFR_RNDN);
+  } else {
+    mpfr_add(midpoint.get(), low.get(), high.get(), MPFR_RNDN);  // exact: neighbours in T
+    mpfr_div_2ui(midpoint.get(), midpoint.get(), 1, MPFR_RNDN);
+  }
+  const mpfr_prec_t bits = std::max<mpfr_prec_t>(64, 2 * p);
+  const rational uq(exactly(u, bits)), dyq(exactly(dy, bits)), phiq(exactly(phi, bits));
+  const int sign = detail_ref::residual_sign(rational(midpoint), uq, dyq, phiq);
+  if (sign < 0) return high;
+  if (sign > 0) return low;
+  return rounded_to<T>(midpoint);
+}
+
 // The root rounded to nearest in double, with gradual underflow.
 inline double rounded_to_double(const real& x) {
   const mpfr_exp_t old_emin = mpfr_get_emin(), old_emax = mpfr_get_emax();

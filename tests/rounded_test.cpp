@@ -1,0 +1,378 @@
+// The correctly rounded mode (rounded.hpp): bit for bit against the certified
+// reference rounded to T, on every input family and on the committed hard-case
+// lists; the properties that correct rounding implies; and the counts the
+// README quotes (failures, the slow path's share, stable's share of results
+// that are not correctly rounded).
+#include <cstdlib>
+#include <filesystem>
+
+#include "harness.hpp"
+
+namespace contact::testing {
+namespace {
+
+using rounded_types = ::testing::Types<float, double, long double, float128>;
+
+// Whether s is exactly the MPFR number r: value, sign of zero and infinities alike.
+template <class T>
+bool same_value(const T& s, const reference::real& r) {
+  using std::isinf;
+  using std::isnan;
+  using std::signbit;
+  if (isnan(s) || mpfr_nan_p(r.get())) return false;
+  if (isinf(s) || mpfr_inf_p(r.get())) return isinf(s) && mpfr_inf_p(r.get()) && (s < 0) == (mpfr_sgn(r.get()) < 0);
+  if (s == 0 || mpfr_zero_p(r.get())) return s == 0 && mpfr_zero_p(r.get()) && bool(signbit(s)) == bool(mpfr_signbit(r.get()));
+  return mpfr_cmp(as_real(s).get(), r.get()) == 0;
+}
+
+// A root of exactly 0 has no sign to round: (A.29) gives -u (so +0 for u = -0,
+// which the reference, reading -0 as 0, calls -0) and (A.31) +0. A nonzero
+// root that rounds to zero gives the zero of its sign.
+template <class T>
+bool correctly_rounded(const T& s, const reference::certified& exact, const T& u, const T& dy, const T& phi) {
+  if (mpfr_zero_p(exact.s.get())) return s == 0;
+  return same_value(s, reference::rounded_root(exact, u, dy, phi));
+}
+
+// ---- every input family against the reference ---------------------------------
+
+struct tally {
+  long cases = 0, wrong = 0, wrong_case = 0, slow = 0, stable_not_rounded = 0;
+};
+
+// Draws `count` inputs of a family (fixed seed) and counts what solve_rounded
+// gets wrong against the reference, how often it took the slow path, and how
+// often stable is not correctly rounded.
+template <class T>
+tally measure(const std::string& family, const rc::Gen<input<T>>& gen, int count) {
+  set_up_type<T>();
+  tally t;
+  rc::detail::TestParams params = rc::detail::configuration().testParams;
+  params.maxSuccess = count;
+  rc::detail::TestMetadata metadata;
+  metadata.id = metadata.description = "rounded " + family + " [" + std::string(type_name<T>) + "]";
+  rc::detail::checkTestable(
+      [&] {
+        const auto x = *gen;
+        const auto exact = reference_for(x);
+        const auto traced = detail::solve_rounded_traced(x.u, x.dy, x.phi);
+        ++t.cases;
+        t.slow += traced.exact_decision;
+        if (!correctly_rounded(traced.result.s, exact, x.u, x.dy, x.phi)) {
+          if (++t.wrong <= 5) ADD_FAILURE() << family << ": " << x << " got " << traced.result.s << ", exact root " << exact.s.to_string(40);
+        }
+        if (traced.result.which != exact.which) ++t.wrong_case;
+        if constexpr (std::is_same_v<T, double>)  // rounded_to<double> is the reference's own rounded_to_double
+          if (!same_value(reference::rounded_to_double(exact.s), reference::rounded_to<double>(exact.s))) ++t.wrong;
+        if (!correctly_rounded(solve_stable(x.u, x.dy, x.phi).s, exact, x.u, x.dy, x.phi)) ++t.stable_not_rounded;
+      },
+      metadata, params);
+  return t;
+}
+
+template <class T>
+int samples_for() {
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) return 20000;
+  if constexpr (std::is_same_v<T, long double>) return 5000;
+  return 1000;
+}
+
+template <class T>
+class RoundedAgainstReference : public ::testing::Test {};
+TYPED_TEST_SUITE(RoundedAgainstReference, rounded_types, type_names_for_gtest);
+
+// The result is the reference root rounded to T, bit for bit, and the case the
+// exact case, on every family of harness.hpp; on the audio-rate inputs the
+// exact decision runs for fewer than 1 in 1000.
+TYPED_TEST(RoundedAgainstReference, EveryFamilyBitForBit) {
+  using T = TypeParam;
+  const int n = samples_for<T>();
+  const std::pair<std::string, rc::Gen<input<T>>> families[] = {
+      {"any_input", any_input<T>()},
+      {"boundary_input", boundary_input<T>()},
+      {"cancellation_input", cancellation_input<T>()},
+      {"physical_input", physical_input<T>()},
+      {"whole_range", whole_range_input<T>()},
+  };
+  for (const auto& [family, gen] : families) {
+    const tally t = measure<T>(family, gen, n);
+    std::printf("%-12s %-18s %6ld cases: %ld not correctly rounded, %ld wrong case, slow path %ld (%.2g), "
+                "stable not correctly rounded %ld (%.3g)\n",
+                std::string(type_name<T>).c_str(), family.c_str(), t.cases, t.wrong, t.wrong_case, t.slow,
+                double(t.slow) / double(t.cases), t.stable_not_rounded, double(t.stable_not_rounded) / double(t.cases));
+    ::testing::Test::RecordProperty(family + "_not_correctly_rounded", std::to_string(t.wrong));
+    ::testing::Test::RecordProperty(family + "_slow_path", std::to_string(t.slow));
+    EXPECT_EQ(t.wrong, 0) << family;
+    EXPECT_EQ(t.wrong_case, 0) << family;
+    EXPECT_EQ(t.cases, n) << family;
+    if (family == "physical_input") EXPECT_LT(double(t.slow), 1e-3 * double(t.cases)) << family;
+  }
+}
+
+// Why the mode exists: the stable path, within its proven few ulps, is not
+// correctly rounded on a sizeable share of the audio-rate inputs.
+TEST(StableIsNotCorrectlyRounded, OnASizeableShareOfAudioRateInputs) {
+  const tally t = measure<double>("physical_input", physical_input<double>(), 20000);
+  std::printf("stable not correctly rounded on %ld of %ld audio-rate inputs (%.3g)\n", t.stable_not_rounded, t.cases,
+              double(t.stable_not_rounded) / double(t.cases));
+  RecordProperty("stable_not_correctly_rounded", std::to_string(t.stable_not_rounded));
+  EXPECT_GT(t.stable_not_rounded, t.cases / 20);
+  EXPECT_EQ(t.wrong, 0);
+}
+
+// ---- the committed hard cases -----------------------------------------------------
+
+struct hard_case {
+  std::string line;
+  double u, dy, phi, s;
+  contact_case which;
+};
+
+// Every line "u dy phi expected_s expected_case" of tests/rounded_hard_cases/NAME.txt.
+std::vector<hard_case> read_hard_cases(const std::string& name) {
+  const std::string path = std::string(CONTACT_ROUNDED_HARD_CASES) + "/" + name + ".txt";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<hard_case> cases;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string text[5];
+    for (auto& field : text) fields >> field;
+    auto number = [](const std::string& t) { return std::strtod(t.c_str(), nullptr); };  // hex and inf, exactly
+    cases.push_back({line, number(text[0]), number(text[1]), number(text[2]), number(text[3]),
+                     static_cast<contact_case>(std::stoi(text[4]))});
+  }
+  return cases;
+}
+
+const char* const hard_case_files[] = {"exact_ties_contact", "exact_ties_release", "exact_ties_impact", "near_ties",
+                                       "range_edges", "subnormal_phi"};
+
+class RoundedHardCases : public ::testing::TestWithParam<const char*> {};
+INSTANTIATE_TEST_SUITE_P(, RoundedHardCases, ::testing::ValuesIn(hard_case_files),
+                         [](const auto& info) { return std::string(info.param); });
+
+// Each listed input gives its expected step bit for bit, and the expected value
+// is still what the reference says (the list cannot drift from it).
+TEST_P(RoundedHardCases, EveryLineGivesItsExpectedStep) {
+  const auto cases = read_hard_cases(GetParam());
+  EXPECT_GE(cases.size(), 30u);
+  for (const auto& c : cases) {
+    const auto r = solve_rounded(c.u, c.dy, c.phi);
+    EXPECT_TRUE(r.s == c.s || (std::isnan(r.s) && std::isnan(c.s))) << c.line << "\n  got " << r.s;
+    EXPECT_EQ(std::signbit(r.s), std::signbit(c.s)) << c.line;
+    EXPECT_EQ(r.which, c.which) << c.line;
+    const auto exact = reference::solve(c.u, c.dy, c.phi);
+    EXPECT_TRUE(correctly_rounded(c.s, exact, c.u, c.dy, c.phi)) << c.line << "\n  the reference root is " << exact.s.to_string(40);
+    EXPECT_EQ(exact.which, c.which) << c.line;
+  }
+}
+
+// The tie files hold exact ties: the root is a midpoint, and the answer is the
+// even neighbour (its last significand bit is 0).
+TEST(RoundedTies, TiesGoToTheEvenNeighbour) {
+  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact"})
+    for (const auto& c : read_hard_cases(name)) {
+      const auto exact = reference::solve(c.u, c.dy, c.phi);
+      reference::real at_54(54);
+      EXPECT_EQ(mpfr_set(at_54.get(), exact.s.get(), MPFR_RNDN), 0) << c.line;   // 54 bits: a midpoint ...
+      reference::real at_53(53);
+      EXPECT_NE(mpfr_set(at_53.get(), exact.s.get(), MPFR_RNDN), 0) << c.line;   // ... and no double
+      int exponent = 0;
+      const double significand = std::frexp(std::fabs(c.s), &exponent);
+      EXPECT_EQ(std::fmod(std::ldexp(significand, 53), 2.0), 0.0) << c.line;  // even
+    }
+}
+
+// ---- properties -------------------------------------------------------------------
+
+template <class T>
+class RoundedProperty : public ::testing::Test {};
+TYPED_TEST_SUITE(RoundedProperty, rounded_types, type_names_for_gtest);
+
+// Rounding is monotonic and the root does not increase with u, so neither does s.
+TYPED_TEST(RoundedProperty, StepDoesNotIncreaseWithU) {
+  using T = TypeParam;
+  check_property<T>("rounded monotonicity", [] {
+    const auto x = *any_input<T>();
+    const T other_u = *rc::gen::oneOf(any_finite<T>(), rc::gen::just(T(detail::next_up(x.u))));
+    using std::isfinite;
+    RC_PRE(isfinite(other_u));
+    const T lower_u = x.u < other_u ? x.u : other_u, upper_u = x.u < other_u ? other_u : x.u;
+    const T at_lower = solve_rounded(lower_u, x.dy, x.phi).s, at_upper = solve_rounded(upper_u, x.dy, x.phi).s;
+    RC_LOG() << x << " u1=" << lower_u << " s1=" << at_lower << " u2=" << upper_u << " s2=" << at_upper << "\n";
+    RC_ASSERT(at_lower >= at_upper);
+  });
+}
+
+// Within half an ulp of the root, so within stable's bound + 0.5 ulp of stable.
+TYPED_TEST(RoundedProperty, AgreesWithStableWithinItsBoundAndHalfAnUlp) {
+  using T = TypeParam;
+  check_property<T>("rounded vs stable", [] {
+    const auto x = *any_input<T>();
+    const auto exact = reference_for(x);
+    RC_PRE(root_is_finite_in<T>(exact));
+    const auto stable = solve_stable(x.u, x.dy, x.phi);
+    const auto rounded = solve_rounded(x.u, x.dy, x.phi);
+    using std::isfinite;
+    RC_PRE(isfinite(stable.s) && isfinite(rounded.s));
+    reference::real difference = as_real(rounded.s);
+    mpfr_sub(difference.get(), difference.get(), as_real(stable.s).get(), MPFR_RNDN);
+    RC_LOG() << x << " stable=" << stable.s << " rounded=" << rounded.s << "\n";
+    RC_ASSERT(rounded.which == stable.which);
+    RC_ASSERT(in_ulps<T>(difference, exact.s) <= stable_bound_for(stable.which, x.u) + 0.5);
+  });
+}
+
+// Scaling u and dy by 2^k scales the root by 2^k, and rounding commutes with
+// that wherever the results are normal: s scales exactly.
+TYPED_TEST(RoundedProperty, ScalingUAndDyByPowerOfTwoScalesStepExactly) {
+  using T = TypeParam;
+  check_property<T>("rounded homogeneity", [] {
+    const auto x = *any_input<T>();
+    const int reach = int(std::min<long>(300, harness::highest_exponent<T>() / 4));
+    const int k = *rc::gen::inRange(-reach, reach + 1);
+    using std::fabs;
+    using std::isfinite;
+    using std::ldexp;
+    const T u2 = ldexp(x.u, k), dy2 = ldexp(x.dy, k);
+    RC_PRE(ldexp(u2, -k) == x.u && ldexp(dy2, -k) == x.dy);  // no input lost bits
+    const auto base = solve_rounded(x.u, x.dy, x.phi), scaled = solve_rounded(u2, dy2, x.phi);
+    const T smallest_normal = (std::numeric_limits<T>::min)();
+    auto normal = [&](const T& v) { return v != 0 && isfinite(v) && fabs(v) >= smallest_normal; };
+    RC_PRE(normal(base.s) && normal(ldexp(base.s, k)));
+    RC_LOG() << x << " k=" << k << " s=" << base.s << " s(2^k)=" << scaled.s << "\n";
+    RC_ASSERT(scaled.which == base.which);
+    RC_ASSERT(scaled.s == ldexp(base.s, k));
+  });
+}
+
+// Complementarity holds weakly: the rounded root may be dy itself where the
+// root lies within half an ulp of it, never beyond.
+TYPED_TEST(RoundedProperty, StepLiesWeaklyOnItsCasesSide) {
+  using T = TypeParam;
+  check_property<T>("weak complementarity", [] {
+    const auto x = *any_input<T>();
+    const auto r = solve_rounded(x.u, x.dy, x.phi);
+    RC_LOG() << x << " s=" << r.s << " case=" << int(r.which) << "\n";
+    switch (r.which) {
+      case contact_case::free: RC_ASSERT(r.s >= x.dy); break;
+      case contact_case::release: RC_ASSERT(r.s >= x.dy); break;
+      case contact_case::impact: RC_ASSERT(r.s <= x.dy); break;
+      case contact_case::contact: RC_ASSERT(r.s <= x.dy); break;
+      default: RC_FAIL("invalid case for a valid input");
+    }
+  });
+}
+
+TYPED_TEST(RoundedProperty, ZeroStiffnessGivesMinusU) {
+  using T = TypeParam;
+  check_property<T>("rounded phi = 0", [] {
+    const T u = *any_finite<T>(), dy = *any_finite<T>();
+    RC_ASSERT(solve_rounded(u, dy, T(0)).s == -u);
+  });
+}
+
+TYPED_TEST(RoundedProperty, InvalidInputGivesNaNAndTheInvalidCase) {
+  using T = TypeParam;
+  const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+  const T bad[][3] = {{nan, 1, 1}, {1, nan, 1}, {1, 1, nan}, {inf, 1, 1}, {1, -inf, 1}, {1, 1, inf}, {1, 1, -1}};
+  for (const auto& x : bad) {
+    const auto r = solve_rounded(x[0], x[1], x[2]);
+    using std::isnan;
+    EXPECT_TRUE(isnan(r.s));
+    EXPECT_EQ(r.which, contact_case::invalid);
+  }
+}
+
+// Inputs inside the plain window whose s0 is not: the exact decision takes over.
+// (A.30) s ~ -u / (1 + phi) below the window, (A.31) s ~ eps dy below it (cancellation
+// beyond p bits), (A.32) s ~ sqrt(phi) dy above it.
+TYPED_TEST(RoundedProperty, StepsOutsideTheWindowGoToTheExactDecision) {
+  using T = TypeParam;
+  using std::ldexp;
+  const long w = detail::safe_window<T>::half_width();
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T inputs[][3] = {{ldexp(T(1), int(-w + 10)), T(0), ldexp(T(1), int(w - 10))},
+                         {ldexp(T(1), int(-w + 41)), ldexp(T(1), int(-w + 40)), T(1 + eps)},
+                         {T(0), ldexp(T(1), int(w - 10)), ldexp(T(1), int(w - 10))}};
+  for (const auto& x : inputs) {
+    const auto traced = detail::solve_rounded_traced(x[0], x[1], x[2]);
+    const auto exact = reference::solve(x[0], x[1], x[2]);
+    EXPECT_TRUE(correctly_rounded(traced.result.s, exact, x[0], x[1], x[2])) << x[0] << " " << x[1] << " " << x[2];
+    EXPECT_EQ(traced.result.which, exact.which);
+    if constexpr (!std::is_same_v<T, float>) EXPECT_TRUE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
+  }
+}
+
+// ---- dispatch ---------------------------------------------------------------------
+
+TEST(RoundedDispatch, SolveWithTheRoundedAlgorithmIsSolveRounded) {
+  EXPECT_EQ(name_of(algorithm::rounded), "rounded");
+  EXPECT_EQ(algorithms[3], algorithm::rounded);
+  const auto a = solve(0x1.3a92a30554801p-11, 0x1.a36e2eb1c432dp-14, 3.0, algorithm::rounded);
+  const auto b = solve_rounded(0x1.3a92a30554801p-11, 0x1.a36e2eb1c432dp-14, 3.0);
+  EXPECT_EQ(a.s, b.s);
+  EXPECT_EQ(a.which, b.which);
+  EXPECT_EQ(solve(3.0f, 1.0f, 3.0f, algorithm::rounded).s, 0.75f);
+}
+
+// The multiprecision types have no rounded mode: asking for it is refused, not
+// answered by another algorithm.
+TEST(RoundedDispatch, TypesWithoutARoundedModeRefuseIt) {
+  static_assert(rounded_available<float> && rounded_available<double> && rounded_available<long double> &&
+                rounded_available<float128>);
+  static_assert(!rounded_available<bin_float_50> && !rounded_available<bin_float_100> && !rounded_available<mpfr_float>);
+  EXPECT_THROW(solve(bin_float_50(3), bin_float_50(1), bin_float_50(3), algorithm::rounded), std::invalid_argument);
+  set_up_type<mpfr_float>();
+  EXPECT_THROW(solve(mpfr_float(3), mpfr_float(1), mpfr_float(3), algorithm::rounded), std::invalid_argument);
+}
+
+// The exact decision on its own, from a candidate far from the root: the walk
+// gets there from anywhere (here 1000 ulps off, and from the wrong side of dy).
+TEST(RoundedExactDecision, WalksFromAFarCandidate) {
+  const double u = 0x1.3a92a30554801p-11, dy = 0x1.a36e2eb1c432dp-14, phi = 3.0;
+  const auto exact = reference::solve(u, dy, phi);
+  double start = solve_stable(u, dy, phi).s;
+  for (int i = 0; i < 1000; ++i) start = std::nextafter(start, 1.0);
+  const solution<double> from{start, exact.which};
+  const auto walked = detail::rounded_by_exact_decision(u, dy, phi, &from);
+  EXPECT_TRUE(walked.exact_decision);
+  EXPECT_TRUE(correctly_rounded(walked.result.s, exact, u, dy, phi));
+}
+
+// Ties reached after walking: from 5 ulps below and 5 ulps above the tie, the
+// walk crosses the midpoints one by one and stops at the tie's even neighbour.
+TEST(RoundedExactDecision, WalksToATieFromEitherSide) {
+  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact"}) {
+    const auto cases = read_hard_cases(name);
+    ASSERT_FALSE(cases.empty());
+    for (const auto& c : {cases.front(), cases.back()}) {
+      for (const double direction : {-1.0, 1.0}) {
+        double start = c.s;
+        for (int i = 0; i < 5; ++i) start = std::nextafter(start, direction * HUGE_VAL);
+        const solution<double> from{start, c.which};
+        const auto walked = detail::rounded_by_exact_decision(c.u, c.dy, c.phi, &from);
+        EXPECT_EQ(walked.result.s, c.s) << c.line << " from " << start;
+      }
+    }
+  }
+}
+
+// The Newton step's guards, on made-up residuals: the step is refused (the
+// exact decision takes over) when the sign of Q'(s0) is uncertain, when it is
+// not the sign Q' has at the wanted root, and when the step exceeds 16 ulps.
+TEST(RoundedFastPath, NewtonStepRefusesWhatItCannotBound) {
+  using rounded_form::residual;
+  const double s0 = 1.0, tiny = 0x1p-60;
+  EXPECT_TRUE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 0x1p-52, 1.0, 1}).valid);
+  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 1.0, 1.0, 1}).valid);
+  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 0x1p-52, 1.0, -1}).valid);
+  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{0x1p-20, 0x1p-110, 2.0, 0x1p-52, 1.0, 1}).valid);
+  EXPECT_TRUE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, -2.0, 0x1p-52, 1.0, 0}).valid);
+  EXPECT_FALSE(rounded_form::rounds_as_root(rounded_form::approximation<double>{1.0, 0.0, 0.0, false}));
+}
+
+}  // namespace
+}  // namespace contact::testing
