@@ -126,13 +126,17 @@ inline bool write_fully(int fd, const void* buffer, std::size_t size) {
   return true;
 }
 
-// "killed by SIGSEGV (Segmentation fault)" or "exited with status 3".
-inline std::string how_it_ended(int status) {
-  if (WIFSIGNALED(status)) {
-    const int sig = WTERMSIG(status);
-    const char* abbrev = sigabbrev_np(sig);
-    return "killed by SIG" + std::string(abbrev ? abbrev : std::to_string(sig).c_str()) + " (" + strsignal(sig) + ")";
-  }
+inline std::string killed_by(int sig) {
+  const char* abbrev = sigabbrev_np(sig);
+  return "killed by SIG" + std::string(abbrev ? abbrev : std::to_string(sig).c_str()) + " (" + strsignal(sig) + ")";
+}
+
+// "killed by SIGSEGV (Segmentation fault)" or "exited with status 3". A shell
+// reports a child killed by signal N as status 128 + N: `through_shell` reads it so.
+inline std::string how_it_ended(int status, bool through_shell = false) {
+  if (WIFSIGNALED(status)) return killed_by(WTERMSIG(status));
+  if (through_shell && WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + NSIG)
+    return killed_by(WEXITSTATUS(status) - 128);
   if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
   return "ended";
 }
@@ -387,7 +391,7 @@ class command_candidate final : public candidate {
     if (i < end) {
       out[i].kind = timed_out ? outcome::status::hung : outcome::status::crashed;
       out[i].detail = timed_out ? "no answer within " + std::to_string(allowed.count()) + " s"
-                                : "the command " + how_it_ended(status) + " after " + std::to_string(i - begin) +
+                                : "the command " + how_it_ended(status, true) + " after " + std::to_string(i - begin) +
                                       " of " + std::to_string(end - begin) + " answers";
     }
     return i;
