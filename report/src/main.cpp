@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "candidates.hpp"
+#include "contact/harness/candidate.hpp"
 #include "measure.hpp"
 #include "output.hpp"
 #include "scene.hpp"
@@ -62,17 +64,27 @@ int main(int argc, char** argv) {
   std::vector<std::string> scene_files;
   std::string out_dir, scenes_dir;
   bool raw = false, check_only = false;
+  std::vector<std::string> candidate_specs;
   app.add_option("--scene", scene_files, "scene file (TOML); repeatable; default: every *.toml of --scenes-dir");
   app.add_option("--scenes-dir", scenes_dir, "directory of the default scene set")->check(CLI::ExistingDirectory);
   app.add_option("--out", out_dir, "directory to write report.md, results.csv, results.json and plots/ into");
   app.add_flag("--raw", raw, "also write every sample's measurement into DIR/raw/");
   app.add_flag("--check", check_only, "only parse and check the scene files");
+  app.add_option("--candidate", candidate_specs,
+                 "NAME=SPEC: also measure an outside implementation in double (SPEC as contact-check's: "
+                 "lib:PATH[:SYMBOL] or cmd:COMMAND); repeatable");
   try {
     app.parse(argc, argv);
     if (!check_only && out_dir.empty()) throw CLI::RequiredError("--out");
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto& spec : candidate_specs) report::add_candidate(spec);
+  } catch (const contact::harness::candidate_error& e) {
+    std::fprintf(stderr, "contact-report: --candidate %s\n", e.what());
+    return 2;
   }
 
   if (scene_files.empty()) {

@@ -15,6 +15,7 @@
 #include "contact/reference.hpp"
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
+#include "candidates.hpp"
 #include "type_ops.hpp"
 
 namespace report {
@@ -206,6 +207,8 @@ void measure_accuracy(const scene& s, const std::vector<input>& inputs, const me
       progress bar("scene " + s.name + ": accuracy " + type, static_cast<long>(subset.size()));
       ops_for(type).accuracy(r, subset, references, s.families.size(), options.raw, bar, result.accuracy);
     }
+    if (std::find(r.types.begin(), r.types.end(), "double") != r.types.end())
+      measure_candidates(subset, references, s.families.size(), result.accuracy);
   }
 }
 
@@ -218,6 +221,8 @@ void measure_timings(const scene& s, const std::vector<input>& inputs, scene_res
     if (!asks_for(r, check::timing)) continue;
     const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
     const std::string prefix = s.name + "|" + std::to_string(k) + "|";
+    if (std::find(r.types.begin(), r.types.end(), "double") != r.types.end())
+      time_candidates(r, lanes, result.timing);
     for (const auto& type : r.types) {
       ops_for(type).register_timings(r, lanes, prefix);
       for (method m : r.methods) {

@@ -107,6 +107,9 @@ std::vector<std::pair<std::string, std::string>> rows_of(const scene_result& r) 
         if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
       }
   }
+  // then whatever else was measured: the candidates (contact-report --candidate)
+  for (const auto& a : r.accuracy)
+    if (std::find(rows.begin(), rows.end(), std::pair{a.type, a.algorithm}) == rows.end()) rows.emplace_back(a.type, a.algorithm);
   return rows;
 }
 
@@ -161,6 +164,9 @@ std::vector<std::string> algorithms_in_double(const std::vector<scene_result>& s
         out.push_back(name_of(m));
         break;
       }
+  for (const auto& r : scenes)  // the candidates, after the built-in algorithms
+    for (const auto& a : r.accuracy)
+      if (a.type == double_type && std::find(out.begin(), out.end(), a.algorithm) == out.end()) out.push_back(a.algorithm);
   return out;
 }
 

@@ -632,4 +632,45 @@ checks = ["accuracy"]
   EXPECT_EQ(r.err.find("timed"), std::string::npos);  // no benchmark ran
 }
 
+TEST_F(tool, a_candidate_is_measured_beside_the_algorithms_in_double) {
+  std::ofstream(work / "candidate.toml") << R"([scene]
+name = "with_candidate"
+[[family]]
+name = "box"
+generator = "box"
+samples = 50
+u = [1e-6, 1e-3]
+dy = { log10 = [-6, -3], sign = "both" }
+phi = [1e-2, 1e4]
+[[run]]
+types = ["double"]
+algorithms = ["stable"]
+checks = ["accuracy", "timing"]
+repetitions = 1
+min_time = 0.01
+)";
+  // free flight for every input, s = -u: right in the free case only
+  const std::string minus_u =
+      "minus_u=cmd:python3 -c \"import sys; [print(repr(-float.fromhex(l.split()[0])), 1) for l in sys.stdin]\"";
+  const auto r = run_tool("--scene '" + (work / "candidate.toml").string() + "' --out '" +
+                              (work / "candidate-out").string() + "' --candidate '" + minus_u + "'",
+                          "candidate");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read(work / "candidate-out" / "results.json"));
+  std::set<std::string> measured, timed;
+  for (const auto& a : j["scenes"][0]["accuracy"]) measured.insert(a["algorithm"].get<std::string>());
+  for (const auto& t : j["scenes"][0]["timing"]) timed.insert(t["algorithm"].get<std::string>());
+  EXPECT_EQ(measured, (std::set<std::string>{"stable", "minus_u"}));
+  EXPECT_EQ(timed, (std::set<std::string>{"stable", "minus_u"}));
+  for (const auto& a : j["scenes"][0]["accuracy"])
+    if (a["algorithm"] == "minus_u") EXPECT_GT(a["wrong_case"].get<long>(), 0);  // box draws contact too
+  EXPECT_NE(read(work / "candidate-out" / "report.md").find("| double | minus_u |"), std::string::npos);
+}
+
+TEST_F(tool, a_bad_candidate_is_a_usage_error) {
+  const auto r = run_tool("--check --candidate 'nameless'", "bad-candidate");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("NAME=SPEC"), std::string::npos) << r.err;
+}
+
 }  // namespace

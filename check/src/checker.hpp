@@ -1,0 +1,359 @@
+// The engine of contact-check: runs properties on a candidate, fuzzes it
+// against the reference, shrinks what fails and records it per property.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/harness/candidate.hpp"
+#include "contact/reference.hpp"
+#include "properties.hpp"
+#include "shrink.hpp"
+
+namespace check {
+
+struct options {
+  double max_ulp = 4;
+  double seconds = 10;   // of the fuzzing campaign
+  long trials = 1000;    // per property of the suite
+  std::uint64_t seed = 1;
+};
+
+// One shrunk failure, as printed.
+struct failure {
+  std::string reason;
+  std::vector<std::string> lines;  // input, answer, certified root of each probe
+};
+
+struct record {
+  std::string name, claim;
+  long tried = 0, failed = 0;
+  // the first failure in each exact case (0 for invalid input), shrunk within
+  // that case: one misprint in one case's formula does not hide another's
+  std::map<int, failure> first;
+  double seconds = 0;
+};
+
+template <class T>
+std::string hex(const T& x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", double(x));
+  return text;
+}
+
+template <class T>
+std::string decimal(const T& x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", double(x));
+  return text;
+}
+
+template <class T>
+class checker {
+ public:
+  checker(contact::harness::candidate& c, const options& o) : candidate_(c), options_(o) { returns_record(); }
+
+  // The property suite: `trials` trials of each property.
+  void run_suite() {
+    seeded_source source(options_.seed);
+    for (const property<T>& p : properties<T>(options_.max_ulp)) {
+      const auto start = std::chrono::steady_clock::now();
+      record& r = record_of(p);
+      constexpr long batch = 256;
+      for (long done = 0; done < options_.trials; done += batch) {
+        std::vector<trial<T>> trials;
+        for (long i = done; i < std::min(options_.trials, done + batch); ++i) trials.push_back(p.draw(source));
+        judge(p, trials);
+      }
+      r.seconds += seconds_since(start);
+    }
+  }
+
+  // Differential fuzzing against the reference until `seconds` have passed:
+  // fresh draws from every family, and mutations of the inputs with the
+  // largest errors so far (the campaign's feedback).
+  void run_campaign() {
+    seeded_source source(options_.seed ^ 0x9e3779b97f4a7c15ULL);
+    const auto start = std::chrono::steady_clock::now();
+    const auto singles = single_input_properties();
+    std::vector<std::pair<double, input<T>>> pool;  // (ulp error, input), the worst first
+    while (seconds_since(start) < options_.seconds) {
+      std::vector<trial<T>> trials;
+      for (int i = 0; i < 512; ++i)
+        trials.push_back({pool.empty() || coin(source) ? fresh(source) : mutate(source, pool), 0});
+      std::vector<probe_result<T>> results;
+      if (!solve(trials, results)) continue;
+      campaign_inputs_ += static_cast<long>(trials.size());
+      returns_record().tried += static_cast<long>(trials.size());
+      for (std::size_t i = 0; i < trials.size(); ++i) {
+        if (results[i].exact) {
+          const double error = contact::reference::ulp_error<T>(results[i].s, *results[i].exact);
+          pool.emplace_back(std::isnan(error) ? std::numeric_limits<double>::infinity() : error, results[i].x);
+        }
+        std::vector<probe_result<T>> one;
+        one.push_back(std::move(results[i]));
+        for (const property<T>* p : singles) {
+          record& rec = record_of(*p);
+          ++rec.tried;
+          if (const auto why = p->verdict(trials[i], one)) {
+            ++rec.failed;
+            keep(rec, *p, trials[i], one, *why);
+          }
+        }
+      }
+      std::sort(pool.begin(), pool.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+      if (pool.size() > 64) pool.resize(64);
+    }
+    campaign_seconds_ = seconds_since(start);
+  }
+
+  const std::deque<record>& records() const { return records_; }
+  long campaign_inputs() const { return campaign_inputs_; }
+  double campaign_seconds() const { return campaign_seconds_; }
+
+ private:
+  static double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  record& record_of(const std::string& name, const std::string& claim) {
+    for (auto& r : records_)
+      if (r.name == name) return r;
+    records_.push_back({name, claim});
+    return records_.back();
+  }
+  record& record_of(const property<T>& p) { return record_of(p.name, p.claim); }
+  record& returns_record() { return record_of(returns_name, returns_claim); }
+
+  std::vector<const property<T>*> single_input_properties() {
+    if (all_.empty()) all_ = properties<T>(options_.max_ulp);
+    std::vector<const property<T>*> out;
+    for (const auto& p : all_)
+      if (p.name == "forward_error" || p.name == "residual" || p.name == "case" || p.name == "complementarity" ||
+          p.name == "invalid_input")
+        out.push_back(&p);
+    return out;
+  }
+
+  // Solves the probes of every trial (one call for all); false when the
+  // candidate faulted, which is recorded (shrunk the first time) under `returns`.
+  bool solve(const std::vector<trial<T>>& trials, std::vector<probe_result<T>>& results) {
+    std::vector<input<T>> inputs;
+    for (const auto& t : trials) inputs.push_back(t.x);
+    const auto outcomes = candidate_.solve(as_double(inputs));
+    results.clear();
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      if (outcomes[i].faulted()) {
+        record& r = returns_record();
+        ++r.failed;
+        if (r.first.empty()) r.first[0] = shrink_fault(inputs[i], outcomes[i]);
+        return false;
+      }
+      results.push_back(answer_of(inputs[i], outcomes[i]));
+    }
+    return true;
+  }
+
+  static std::vector<input<double>> as_double(const std::vector<input<T>>& inputs) {
+    std::vector<input<double>> out;
+    for (const auto& x : inputs) out.push_back({double(x.u), double(x.dy), double(x.phi)});
+    return out;
+  }
+
+  static probe_result<T> answer_of(const input<T>& x, const outcome& o) {
+    probe_result<T> r{x, T(o.s), o.which, std::nullopt};
+    if (valid(x)) r.exact.emplace(contact::reference::solve<T>(x.u, x.dy, x.phi));
+    return r;
+  }
+
+  // Judges a batch of trials of p; the first failure is shrunk and kept.
+  void judge(const property<T>& p, const std::vector<trial<T>>& trials) {
+    record& r = record_of(p);
+    std::vector<input<T>> inputs;
+    std::vector<std::size_t> first;
+    for (const auto& t : trials) {
+      first.push_back(inputs.size());
+      for (const auto& x : p.probes(t)) inputs.push_back(x);
+    }
+    first.push_back(inputs.size());
+    const auto outcomes = candidate_.solve(as_double(inputs));
+    for (std::size_t t = 0; t < trials.size(); ++t) {
+      std::vector<probe_result<T>> results;
+      bool complete = true;
+      for (std::size_t i = first[t]; i < first[t + 1]; ++i) {
+        if (outcomes[i].faulted()) {
+          record& returns = returns_record();
+          ++returns.failed;
+          if (returns.first.empty()) returns.first[0] = shrink_fault(inputs[i], outcomes[i]);
+        }
+        if (!outcomes[i].answered()) complete = false;
+        else results.push_back(answer_of(inputs[i], outcomes[i]));
+      }
+      if (!complete) break;  // the rest was not run
+      ++r.tried;
+      ++returns_record().tried;
+      if (const auto why = p.verdict(trials[t], results)) {
+        ++r.failed;
+        keep(r, p, trials[t], results, *why);
+      }
+    }
+  }
+
+  // Seconds one more shrink may take: a few each, and at most half a minute in
+  // all, so that a slow candidate (a command started per batch) still finishes.
+  double shrink_seconds() const { return std::clamp(30.0 - shrinking_, 0.0, 3.0); }
+
+  static int case_of(const std::vector<probe_result<T>>& results) {
+    return results[0].exact ? static_cast<int>(results[0].exact->which) : 0;
+  }
+
+  // Keeps the failure, shrunk, if it is the first in its case.
+  void keep(record& r, const property<T>& p, const trial<T>& t, const std::vector<probe_result<T>>& results,
+            const std::string& why) {
+    const int which = case_of(results);
+    if (!r.first.count(which)) r.first[which] = shrink(p, t, why, which);
+  }
+
+  // Replaces the failing trial by its simplest failing neighbour in the same case while there is one.
+  failure shrink(const property<T>& p, trial<T> t, std::string why, int which) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int round = 0; round < 200 && seconds_since(start) < shrink_seconds(); ++round) {
+      const auto neighbours = simpler_trials(t);
+      std::vector<input<T>> inputs;
+      std::vector<std::size_t> first;
+      for (const auto& n : neighbours) {
+        first.push_back(inputs.size());
+        for (const auto& x : p.probes(n)) inputs.push_back(x);
+      }
+      first.push_back(inputs.size());
+      const auto outcomes = candidate_.solve(as_double(inputs));
+      bool simpler = false;
+      for (std::size_t k = 0; k < neighbours.size() && !simpler; ++k) {
+        std::vector<probe_result<T>> results;
+        bool complete = true;
+        for (std::size_t i = first[k]; i < first[k + 1]; ++i) {
+          if (!outcomes[i].answered()) complete = false;
+          else results.push_back(answer_of(inputs[i], outcomes[i]));
+        }
+        if (!complete) break;  // a fault: the shrink stays with what it has
+        if (case_of(results) != which) continue;
+        if (auto reason = p.verdict(neighbours[k], results)) {
+          t = neighbours[k];
+          why = *reason;
+          simpler = true;
+        }
+      }
+      if (!simpler) break;
+    }
+    shrinking_ += seconds_since(start);
+    return describe(p.probes(t), why);
+  }
+
+  // The simplest neighbour that still makes the candidate crash or hang.
+  failure shrink_fault(input<T> x, outcome fault) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int round = 0; round < 100 && seconds_since(start) < shrink_seconds(); ++round) {
+      bool simpler = false;
+      for (const auto& n : simpler_trials(trial<T>{x, 0})) {
+        const auto o = candidate_.solve(as_double({n.x}));
+        if (o[0].faulted()) {
+          x = n.x;
+          fault = o[0];
+          simpler = true;
+          break;
+        }
+        // a neighbour that answers is cheap; one that hangs costs a timeout, so few are tried
+        if (seconds_since(start) > shrink_seconds()) break;
+      }
+      if (!simpler) break;
+    }
+    shrinking_ += seconds_since(start);
+    failure f;
+    f.reason = fault.detail.empty() ? "no answer" : fault.detail;
+    f.lines.push_back(input_line(x));
+    return f;
+  }
+
+  static std::string input_line(const input<T>& x) {
+    return "input      u = " + hex(x.u) + "  dy = " + hex(x.dy) + "  phi = " + hex(x.phi) + "   (" + decimal(x.u) +
+           ", " + decimal(x.dy) + ", " + decimal(x.phi) + ")";
+  }
+
+  failure describe(const std::vector<input<T>>& probes, const std::string& why) {
+    failure f;
+    f.reason = why;
+    const auto outcomes = candidate_.solve(as_double(probes));
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+      f.lines.push_back(input_line(probes[i]));
+      if (!outcomes[i].answered()) {
+        f.lines.push_back("candidate  no answer: " + outcomes[i].detail);
+        continue;
+      }
+      const auto r = answer_of(probes[i], outcomes[i]);
+      f.lines.push_back("candidate  s  = " + hex(r.s) + " (" + decimal(r.s) + "), case " + std::to_string(r.which) +
+                        " " + std::string(contact::name_of(static_cast<contact::contact_case>(r.which))));
+      if (r.exact)
+        f.lines.push_back("certified  s* = " + root_text<T>(*r.exact) + ", case " +
+                          std::to_string(static_cast<int>(r.exact->which)) + " " +
+                          std::string(contact::name_of(r.exact->which)) + " " +
+                          std::string(contact::equation_of(r.exact->which)));
+      else
+        f.lines.push_back("certified  invalid input: s* = NaN, case 0");
+    }
+    return f;
+  }
+
+  // A draw from every family and from the special values.
+  input<T> fresh(seeded_source& source) {
+    using namespace contact::harness;
+    using s = distribution::shape;
+    switch (source.integer(0, 9)) {
+      case 0: return impact_grazing<T>(source, {s::log2, -60, 60, 1}, {s::log2, -30, 60, 1}, {s::log2, -50, 0, 1});
+      case 1: return {any_finite<T>(source), any_finite<T>(source), T(0)};
+      case 2:
+        for (const auto& p : all_)
+          if (p.name == "invalid_input") return p.draw(source).x;
+        [[fallthrough]];
+      default: return any_input<T>(source);
+    }
+  }
+
+  input<T> mutate(seeded_source& source, const std::vector<std::pair<double, input<T>>>& pool) {
+    using std::ldexp;
+    input<T> x = pool[static_cast<std::size_t>(source.integer(0, long(pool.size()) - 1))].second;
+    T* fields[] = {&x.u, &x.dy, &x.phi};
+    T& f = *fields[source.integer(0, 2)];
+    switch (source.integer(0, 6)) {
+      case 0: f = contact::detail::ulp_steps(f, source.integer(-8, 8)); break;
+      case 1: f = -f; break;
+      case 2: {  // both lengths by a power of two: a homogeneous copy
+        const int k = static_cast<int>(source.integer(-40, 40));
+        x.u = ldexp(x.u, k);
+        x.dy = ldexp(x.dy, k);
+        break;
+      }
+      case 3: f = with_bits(f, static_cast<int>(source.integer(1, 8))); break;
+      case 4: x.u = contact::detail::ulp_steps(T(x.dy > 0 ? x.dy * (x.phi - 1) : -x.dy), source.integer(-3, 3)); break;
+      case 5: f = contact::harness::any_finite<T>(source); break;
+      default: x.phi = contact::harness::any_phi<T>(source); break;
+    }
+    if (x.phi < 0 && source.integer(0, 7) != 0) x.phi = -x.phi;  // mostly valid
+    return x;
+  }
+
+  contact::harness::candidate& candidate_;
+  options options_;
+  std::deque<record> records_;  // a deque: references to records stay valid as records are added
+  std::vector<property<T>> all_;
+  long campaign_inputs_ = 0;
+  double shrinking_ = 0;  // seconds spent shrinking so far
+  double campaign_seconds_ = 0;
+};
+
+}  // namespace check
