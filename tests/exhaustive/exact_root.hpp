@@ -6,8 +6,8 @@
 //   - the exact case: the sign of R(dy) (docs/equations.md, section 2);
 //   - the binade of s*, from the signs of R at +-2^j;
 //   - whether s is within B ulps of s*: R(s - B ulp(s*)) <= 0 <= R(s + B ulp(s*));
-//   - whether s is s* rounded to nearest, ties to even: s* lies between the
-//     midpoints to the neighbours of s.
+//   - whether s is s* rounded to nearest, ties to even, as the format rounds:
+//     s* lies between the midpoints to the neighbours of s.
 #pragma once
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -157,10 +157,13 @@ struct format_of {
     return exactly<Integer>(double(largest)) + power_of_two<Integer>(1, e - precision - 1);
   }
 
-  // Whether s is s* rounded to nearest, ties to even, among the format's
-  // values: 0, +-[least normal, largest], and +-infinity from the rounding
-  // limit on. (Between 0 and the least normal value, both even, a tie takes
-  // either.)
+  // Whether s is s* rounded as the format rounds its own operations (as
+  // mini_float_test checks them): to nearest in Precision bits with an
+  // unbounded exponent, ties to even, then flushed to zero below the least
+  // normal value and to infinity from the rounding limit on. s* lies between
+  // the midpoints to the neighbours of s, the neighbours below the least
+  // normal value being those of the unbounded exponent; so 0 takes the roots
+  // below the midpoint under the least normal value, which takes the tie.
   template <class Integer>
   static bool is_rounded_root(const input<Integer>& x, const T& s) {
     using std::isinf;
@@ -168,10 +171,16 @@ struct format_of {
     if (isnan(s)) return false;
     const auto limit = rounding_limit<Integer>();
     if (isinf(s)) return s > 0 ? x.residual_sign(limit) <= 0 : x.residual_sign(-limit) >= 0;
+    const auto least = power_of_two<Integer>(1, least_exponent);
+    const auto least_midpoint = least - power_of_two<Integer>(1, least_exponent - precision - 1);
+    if (s == 0) return x.residual_sign(-least_midpoint) < 0 && x.residual_sign(least_midpoint) > 0;
     const auto exact_s = exactly<Integer>(double(s));
-    const T below = detail::next_down(s), above = detail::next_up(s);
-    const auto low = isinf(below) ? -limit : midpoint(exact_s, exactly<Integer>(double(below)));
-    const auto high = isinf(above) ? limit : midpoint(exact_s, exactly<Integer>(double(above)));
+    auto midpoint_towards = [&](const T& neighbour) {
+      if (isinf(neighbour)) return s > 0 ? limit : -limit;
+      if (neighbour == 0) return s > 0 ? least_midpoint : -least_midpoint;
+      return midpoint(exact_s, exactly<Integer>(double(neighbour)));
+    };
+    const auto low = midpoint_towards(detail::next_down(s)), high = midpoint_towards(detail::next_up(s));
     const int at_low = x.residual_sign(low), at_high = x.residual_sign(high);
     if (at_low > 0 || at_high < 0) return false;  // s* outside [low, high]
     return (at_low != 0 && at_high != 0) || is_even(s);

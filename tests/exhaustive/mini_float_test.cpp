@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "contact/detail/float_tools.hpp"
+#include "contact/stable.hpp"
+#include "exhaustive/exact_root.hpp"
 #include "exhaustive/mini_float.hpp"
 
 namespace contact::testing {
@@ -162,5 +164,93 @@ TEST(MiniFloat, NeighboursStepOneValue) {
   }
 }
 
+}  // namespace
+}  // namespace contact::testing
+
+// ---- exact_root.hpp, the exhaustive test's other foundation ---------------------
+
+namespace contact::testing {
+namespace {
+
+using format = exact::format_of<tiny>;
+using exact_input = exact::input<exact::wide>;
+
+exact_input exact_of(tiny u, tiny dy, tiny phi) { return {double(u), double(dy), double(phi)}; }
+
+// Triples of the sample with the four cases and roots of every size.
+template <class Check>
+void for_sampled_triples(Check check) {
+  const auto values = sample();
+  for (std::size_t i = 0; i < values.size(); i += 13)
+    for (std::size_t j = 0; j < values.size(); j += 7)
+      for (std::size_t k = 0; k < values.size(); k += 9)
+        if (!(values[k] < 0)) check(values[i], values[j], values[k]);
+}
+
+// Where the root is known in closed form: s* = -u in the free case. A u
+// that is not a power of two nor the largest value has -u one ulp of s* from
+// its upper neighbour.
+TEST(ExactRoot, FreeRootIsMinusU) {
+  long checked = 0;
+  for_sampled_triples([&](tiny u, tiny dy, tiny phi) {
+    const auto x = exact_of(u, dy, phi);
+    if (x.exact_case() != contact_case::free) return;
+    ++checked;
+    ASSERT_EQ(x.residual_sign(exact::exactly<exact::wide>(double(-u))), 0) << double(u) << " " << double(dy);
+    ASSERT_TRUE(format::is_rounded_root(x, -u));
+    ASSERT_TRUE(format::within(x, -u, 0, 0));
+    int e = 0;
+    const bool power_of_two = fabs(frexp(u, &e)) == tiny(0.5);
+    if (u == 0 || power_of_two || fabs(u) == (std::numeric_limits<tiny>::max)()) return;
+    const tiny above = detail::next_up(tiny(-u));
+    ASSERT_FALSE(format::is_rounded_root(x, above));
+    ASSERT_FALSE(format::within(x, above, (1 << 16) - 1, 16));  // just under one ulp
+    ASSERT_TRUE(format::within(x, above, 1 << 16, 16));         // one ulp
+  });
+  EXPECT_GT(checked, 10000);
+}
+
+// The binade of s* agrees with a close approximation (solve_stable in long
+// double) wherever that lies clear of a power of two.
+TEST(ExactRoot, BinadeOfTheRoot) {
+  long checked = 0;
+  for_sampled_triples([&](tiny u, tiny dy, tiny phi) {
+    const auto x = exact_of(u, dy, phi);
+    const long double root = solve_stable<long double>(double(u), double(dy), double(phi)).s;
+    if (root == 0 || !std::isfinite(root)) return;
+    int e = 0;
+    const long double m = std::fabs(std::frexp(root, &e));
+    if (m < 0.5L + 1e-12L || m > 1 - 1e-12L) return;
+    ++checked;
+    ASSERT_EQ(x.root_sign(), root > 0 ? 1 : -1);
+    const int expected = std::max(e - 1, tiny::least_exponent - 1);
+    ASSERT_EQ(format::binade_of_root(x, 0), expected) << double(u) << " " << double(dy) << " " << double(phi);
+    ASSERT_EQ(format::binade_of_root(x, tiny::greatest_exponent), expected);
+  });
+  EXPECT_GT(checked, 100000);
+}
+
+// Exactly one value near the root (infinity included) is the root rounded
+// as the format rounds, and it lies within half an ulp of it (0 within one).
+TEST(ExactRoot, OneValueIsTheRoundedRoot) {
+  long checked = 0;
+  for_sampled_triples([&](tiny u, tiny dy, tiny phi) {
+    const auto x = exact_of(u, dy, phi);
+    const tiny near = solve_stable(u, dy, phi).s;
+    if (!isfinite(near)) return;
+    // near and 12 values either side, infinity included
+    std::vector<tiny> candidates{near}, rounded_roots;
+    for (tiny s = near; candidates.size() < 13 && isfinite(s);) candidates.push_back(s = detail::next_down(s));
+    for (tiny s = near; candidates.size() < 26 && isfinite(s);) candidates.push_back(s = detail::next_up(s));
+    for (tiny s : candidates)
+      if (format::is_rounded_root(x, s)) rounded_roots.push_back(s);
+    ++checked;
+    ASSERT_EQ(rounded_roots.size(), 1u) << double(u) << " " << double(dy) << " " << double(phi);
+    // 0 takes roots up to nearly the least normal value, one ulp below it
+    const long half_ulp = 1 << 15, ulp = 1 << 16;
+    if (isfinite(rounded_roots[0])) ASSERT_TRUE(format::within(x, rounded_roots[0], rounded_roots[0] == 0 ? ulp : half_ulp, 16));
+  });
+  EXPECT_GT(checked, 100000);
+}
 }  // namespace
 }  // namespace contact::testing
