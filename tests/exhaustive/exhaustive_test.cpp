@@ -233,17 +233,27 @@ struct tally {
   }
 };
 
+template <class T, class Integer>
+void add_to_report_in(tally& mine, const T& u, const T& dy, const T& phi, const solution<T>& result) {
+  const exact::input<Integer> x{double(u), double(dy), double(phi)};
+  const int b = branch_of(result.which, u > 0);
+  const int ulp = exact::format_of<T>::ulp_exponent_of_root(x, result.s);
+  const bool rounded = exact::format_of<T>::is_rounded_root(x, result.s);
+  const double error = double(std::fabs((double(result.s) - close_root(u, dy, phi)) / std::ldexp(1.0L, ulp)));
+  mine.worst[b] = std::max(mine.worst[b], error);
+  ++mine.counted[b];
+  mine.rounded[b] += rounded;
+}
+
 template <class T>
 void add_to_report(tally& mine, const T& u, const T& dy, const T& phi, const solution<T>& result) {
   using std::isinf;
   if (result.which == contact_case::invalid || isinf(result.s)) return;
-  const exact::input<exact::wide> x{double(u), double(dy), double(phi)};
-  const int b = branch_of(result.which, u > 0);
-  const int ulp = exact::format_of<T>::ulp_exponent_of_root(x, result.s);
-  const double error = double(std::fabs((double(result.s) - close_root(u, dy, phi)) / std::ldexp(1.0L, ulp)));
-  mine.worst[b] = std::max(mine.worst[b], error);
-  ++mine.counted[b];
-  mine.rounded[b] += exact::format_of<T>::is_rounded_root(x, result.s);
+  try {
+    add_to_report_in<T, exact::narrow>(mine, u, dy, phi, result);
+  } catch (const std::overflow_error&) {
+    add_to_report_in<T, exact::wide>(mine, u, dy, phi, result);
+  }
 }
 
 void print_report(const char* format_name, const tally& t) {
