@@ -23,10 +23,10 @@
 // prints, per format and branch, the largest error found in ulps and the share
 // of answers that are correctly rounded (a report; nothing is asserted on it).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -156,6 +156,7 @@ class checker {
     }
   }
 
+  // in ulps, for the report of a failure
   double bound(const T& u, contact_case c) const { return std::ldexp(double(bound_units_[u > 0][int(c)]), -bound_fraction_bits); }
 
  private:
@@ -286,9 +287,11 @@ tally check_box(const method<T>& m, const box& b, const char* format_name, bool 
             const auto why = check.failure(u, dy, phi, result);
             if (!why) continue;
             char text[500];
-            std::snprintf(text, sizeof text, "%s %s %s: u=%.9g dy=%.9g phi=%.9g gives %s s=%.9g: %s; the root is %.10Lg",
+            std::snprintf(text, sizeof text,
+                          "%s %s %s: u=%.9g dy=%.9g phi=%.9g gives %s s=%.9g: %s; the root is %.10Lg, the bound %.3f ulps",
                           m.name, format_name, b.name, double(u), double(dy), double(phi),
-                          std::string(name_of(result.which)).c_str(), double(result.s), why->c_str(), close_root(u, dy, phi));
+                          std::string(name_of(result.which)).c_str(), double(result.s), why->c_str(), close_root(u, dy, phi),
+                          check.bound(u, result.which));
             mine.fail(long((i * dys.size() + j) * phis.size() + k), text);
           }
     });
