@@ -2,6 +2,7 @@
 // and scaled<T>, whose every operation must round exactly as T does while its
 // exponent never overflows or underflows.
 #include "contact/detail/scaled.hpp"
+#include "exhaustive/mini_float.hpp"
 #include "harness.hpp"
 
 namespace contact::testing {
@@ -40,6 +41,21 @@ void expect_ulp_steps_count_and_saturate() {
 TEST(Neighbours, UlpStepsCountAndSaturateInDouble) { expect_ulp_steps_count_and_saturate<double>(); }
 TEST(Neighbours, UlpStepsCountAndSaturateInFloat) { expect_ulp_steps_count_and_saturate<float>(); }
 TEST(Neighbours, UlpStepsCountAndSaturateInFloat128) { expect_ulp_steps_count_and_saturate<float128>(); }
+
+// boost::math::float_next compares T with float literals, which does not
+// compile for a type narrower than float: next_up steps the significand.
+TEST(Neighbours, StepOneUlpInACppBinFloatNarrowerThanFloat) {
+  using seven_bits = boost::multiprecision::number<
+      boost::multiprecision::cpp_bin_float<7, boost::multiprecision::digit_base_2, void, std::int16_t, -60, 60>,
+      boost::multiprecision::et_off>;
+  expect_neighbours_saturate<seven_bits>();
+  const seven_bits eps = std::numeric_limits<seven_bits>::epsilon(), least = (std::numeric_limits<seven_bits>::min)();
+  EXPECT_EQ(detail::next_up(seven_bits(-2)), -2 + eps);  // into the binade below, half as wide
+  EXPECT_EQ(detail::next_down(seven_bits(-1)), -1 - eps);
+  EXPECT_EQ(detail::next_up(seven_bits(0)), least);   // no subnormals: the least normal value is next to 0
+  EXPECT_EQ(detail::next_down(seven_bits(0)), -least);
+  EXPECT_EQ(detail::next_up(-least), 0);
+}
 
 // Doubles whose products, quotients and sums of two or three stay normal.
 rc::Gen<double> moderate() {
@@ -122,6 +138,38 @@ TEST(Scaled, ShiftsBeyondIntSaturateToInfinityOrZero) {
   EXPECT_EQ(scaled<double>::shifted(-0.5, std::numeric_limits<long>::max()), -inf);
   EXPECT_EQ(scaled<double>::shifted(0.5, std::numeric_limits<long>::min()), 0.0);
   EXPECT_EQ(scaled<double>::shifted(0.5, 3), 4.0);
+}
+
+// A cluster of the exact sign that T cannot hold: in a 6-bit format whose
+// least normal value is 2^-12, u + dy - phi dy for u = -0.4296875,
+// dy = 0.53125, phi = 0.19140625 is -2^-13, the low part of phi dy: shifted
+// beside u it would flush to zero, and the sign with it (contact, not release).
+TEST(Scaled, ExactSignHoldsInAFormatOfFewExponents) {
+  using narrow_range = mini_float<6, -12, 17, true>;
+  const narrow_range u(-0.4296875), dy(0.53125), phi(0.19140625);
+  const scaled<narrow_range> dy_s(dy);
+  const auto product = exact_product(scaled<narrow_range>(phi), dy_s);
+  EXPECT_EQ(product[1].significand, narrow_range(0.5));  // 2^-13, below the format's range: only the scaled pair holds it
+  EXPECT_EQ(product[1].exponent, -12);
+  EXPECT_EQ(product[1].value(), 0);
+  const std::array<scaled<narrow_range>, 4> terms = {scaled<narrow_range>(u), dy_s, -product[0], -product[1]};
+  EXPECT_EQ(detail::sign_of_exact_sum(terms), -1);
+  EXPECT_EQ(solve_stable(u, dy, phi).which, contact_case::release);
+  EXPECT_EQ(solve_stable(u, dy, phi).which, reference::solve(-0.4296875, 0.53125, 0.19140625).which);
+}
+
+// The plain window leaves room for the formulas' least intermediates above T's
+// least normal value, as for their largest below its largest value. In a 6-bit
+// format from 2^-12 to 2^22, the 22 binades above 1 alone would give the window
+// [2^-2, 2^2], where the low part of phi dy (down to 2^-14) underflows: these
+// inputs came out contact, not release. The 12 binades below give [1, 1].
+TEST(Window, LeavesRoomAboveTheLeastNormalValue) {
+  using lopsided = mini_float<6, -12, 21, true>;
+  EXPECT_EQ(detail::safe_window<lopsided>::half_width(), 0);
+  EXPECT_EQ((detail::safe_window<mini_float<6, -21, 21, true>>::half_width()), 2);
+  const lopsided u(-0.25), dy(0.3515625), phi(0.2890625);
+  EXPECT_EQ(solve_stable(u, dy, phi).which, contact_case::release);
+  EXPECT_EQ(reference::solve(-0.25, 0.3515625, 0.2890625).which, contact_case::release);
 }
 
 // square_root rounds to nearest in every registered type: it equals MPFR's

@@ -114,6 +114,7 @@ TEST(StableHardCases, ListedInputsStayWithinBound) {
       {-0x1p-1074, 0x1p-1074, 1.0},                                               // boundary on subnormals
       {0x1.fffffffffffffp+1023, -0x1.fffffffffffffp+1023, 0x1.fffffffffffffp+1023},
       {0x1.fffffffffffffp+1023, -0x1.fffffffff7fffp+1023, 0x1.4ffffffffffffp-15},  // impact, root -DBL_MAX (was -inf)
+      {-0x1.5593cp+1001, 0x1.cbd305836fdf4p+1021, 0x1.3d645a1cac083p+4},          // release, root just below DBL_MAX (was +inf)
   };
   for (const auto& x : hard) {
     const auto exact = reference::solve(x[0], x[1], x[2]);

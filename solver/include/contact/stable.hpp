@@ -85,13 +85,25 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
     const T terms[4] = {u, dy, -product.high, -product.low};
     return sign_of_exact_sum(terms) >= 0;
   }
-  const scaled<T> phi_s(phi), dy_s(dy);
-  const auto significand_product = two_prod(phi_s.significand, dy_s.significand);  // never underflows
-  const long product_exponent = phi_s.exponent + dy_s.exponent;
-  const std::array<scaled<T>, 4> terms = {
-      scaled<T>(u), dy_s, scaled<T>::normalized(-significand_product.high, product_exponent),
-      scaled<T>::normalized(-significand_product.low, product_exponent)};
+  const scaled<T> dy_s(dy);
+  const auto product = exact_product(scaled<T>(phi), dy_s);
+  const std::array<scaled<T>, 4> terms = {scaled<T>(u), dy_s, -product[0], -product[1]};
   return sign_of_exact_sum(terms) >= 0;
+}
+
+// Whether the (A.32) root lies beyond the largest finite T. R increases, so it
+// does exactly when R(max) < 0, that is (release: s > dy, (A.23))
+// max^2 + u max - phi dy^2 < 0: the sign of an exact sum of products, each
+// split into exact pairs on scaled<T>, where nothing overflows.
+template <class T>
+bool release_root_is_beyond_largest(const T& u, const T& dy, const T& phi) {
+  using S = scaled<T>;
+  const S largest((std::numeric_limits<T>::max)()), dy_s(dy);
+  const auto square = exact_product(largest, largest), linear = exact_product(S(u), largest);
+  const auto phi_dy = exact_product(S(phi), dy_s);
+  const auto high = exact_product(phi_dy[0], dy_s), low = exact_product(phi_dy[1], dy_s);
+  const std::array<S, 8> terms = {square[0], square[1], linear[0], linear[1], -high[0], -high[1], -low[0], -low[1]};
+  return sign_of_exact_sum(terms) < 0;
 }
 
 template <bool plain, class T, class Formula>
@@ -128,6 +140,13 @@ solution<T> solve_cases(const T& u, const T& dy, const T& phi) {
   }
   T s = evaluate<plain>([](const auto&... x) { return stable_form::release(x...); }, u, dy, phi);
   if (!(s > dy)) s = next_up(dy);
+  if constexpr (!plain) {
+    // a root a few ulps below the largest T can be computed beyond it and round
+    // to infinity; the largest T is then the nearer. (Inside the plain window
+    // the root is below 2^(2E + 1), far from the largest T.)
+    using std::isinf;
+    if (isinf(s) && !release_root_is_beyond_largest(u, dy, phi)) s = (std::numeric_limits<T>::max)();
+  }
   return {s, contact_case::release};
 }
 

@@ -110,17 +110,40 @@ int sign_of_exact_sum(const T (&terms)[N]) {
   return expansion[length - 1] > 0 ? 1 : -1;
 }
 
+// The upper neighbour of a finite x below the largest value, for the types
+// that boost::math::float_next cannot take: it compares T with float literals,
+// which Boost.Multiprecision refuses for a type narrower than float (a
+// cpp_bin_float of a few bits). With x = m 2^(e - digits), m an integer of
+// digits bits, the neighbour is (m + 1) 2^(e - digits), or, from a negative
+// power of two into the binade below, (1 - 2^digits) 2^(e - digits - 1); every
+// step is exact, and ldexp flushes to zero what falls below the least normal
+// value, the neighbour there of a type without subnormals.
+template <class T>
+T upper_neighbour_by_frexp(const T& x) {
+  static_assert(std::numeric_limits<T>::has_denorm != std::denorm_present, "steps of normal numbers only");
+  using std::frexp;
+  using std::ldexp;
+  if (x == 0) return (std::numeric_limits<T>::min)();
+  int exponent = 0;
+  const int digits = precision_of<T>();
+  const T m = ldexp(frexp(x, &exponent), digits);
+  if (m == -ldexp(T(1), digits - 1)) return ldexp(T(1 - (1LL << digits)), exponent - digits - 1);
+  return ldexp(m + T(1), exponent - digits);
+}
+
 // The neighbours of x; they saturate at +-infinity instead of raising.
 template <class T>
 T next_up(const T& x) {
   if (x >= (std::numeric_limits<T>::max)()) return std::numeric_limits<T>::infinity();
-  return boost::math::float_next(x);
+  if constexpr (std::is_convertible_v<float, T>) return boost::math::float_next(x);
+  else return upper_neighbour_by_frexp(x);
 }
 
 template <class T>
 T next_down(const T& x) {
   if (x <= -(std::numeric_limits<T>::max)()) return -std::numeric_limits<T>::infinity();
-  return boost::math::float_prior(x);
+  if constexpr (std::is_convertible_v<float, T>) return boost::math::float_prior(x);
+  else return -upper_neighbour_by_frexp(T(-x));
 }
 
 // Whether T's sqrt rounds correctly. libquadmath's sqrtq (Boost's float128)

@@ -68,6 +68,7 @@ struct scaled {
   }
   friend scaled operator-(const scaled& a, const scaled& b) { return a + (-b); }
   friend bool operator>(const scaled& a, const scaled& b) { return (a - b).sign() > 0; }
+  friend bool operator==(const scaled& a, const scaled& b) { return (a - b).sign() == 0; }
 
   // a * b + c with the single rounding of T's fma.
   friend scaled fused_multiply_add(const scaled& a, const scaled& b, const scaled& c) {
@@ -94,12 +95,27 @@ struct scaled {
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
 };
 
+// a * b as an exact pair high + low, by two_prod of the significands: their
+// product lies in [0.25, 1) and its low part is a multiple of 2^-2 digits,
+// which T holds unless its least normal value lies fewer than 2 digits
+// binades below 1; no intermediate can overflow.
+template <class T>
+std::array<scaled<T>, 2> exact_product(const scaled<T>& a, const scaled<T>& b) {
+  const auto product = two_prod(a.significand, b.significand);
+  const long exponent = a.exponent + b.exponent;
+  return {scaled<T>::normalized(product.high, exponent), scaled<T>::normalized(product.low, exponent)};
+}
+
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
 // by exponent and cut into clusters wherever two neighbours lie more than
 // digits + 3 binades apart; a non-zero cluster sum is at least the least
 // significant bit of its smallest term, which outweighs everything below the
-// gap, so the first non-zero cluster decides. Within a cluster the spread is
-// small enough to shift into T's normal range and sum exactly.
+// gap, so the first non-zero cluster decides. A cluster is shifted so that its
+// largest term lies in [0.5, 1) and summed in T, exactly, when T holds its
+// least significant bit as a normal number: always, but for a format of few
+// exponents (a cluster of four spans up to 4 digits + 9 binades). Otherwise the
+// whole sum is taken as an expansion of scaled numbers: slower, and exact as
+// well, since scaled<T> sums round as T's would with an unbounded exponent.
 template <class T, std::size_t N>
 int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
   const long gap = long(precision_of<T>()) + 3;
@@ -116,6 +132,11 @@ int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
     for (; i < N && terms[i].significand != 0 && previous - terms[i].exponent <= gap; ++i) {
       cluster[count++] = scaled<T>::shifted(terms[i].significand, terms[i].exponent - top);
       previous = terms[i].exponent;
+    }
+    if (previous - top - long(precision_of<T>()) < long(std::numeric_limits<T>::min_exponent) - 1) {
+      scaled<T> expansion[N];
+      std::copy(terms.begin(), terms.end(), expansion);
+      return sign_of_exact_sum(expansion);
     }
     for (std::size_t k = count; k < N; ++k) cluster[k] = 0;
     if (int sign = sign_of_exact_sum(cluster)) return sign;

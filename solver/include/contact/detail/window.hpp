@@ -4,6 +4,7 @@
 // fuzzers fold inputs into it; docs/equations.md states the bound.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -18,10 +19,14 @@ namespace contact::detail {
 // Half-width E of the window |x| in [2^-E, 2^E] (or x = 0): the formulas'
 // intermediates are of degree three at most in u, dy and phi, and the least
 // significant bit of a difference lies at most `digits` binades lower, so
-// 4 E + digits + 8 binades must fit below T's largest exponent.
+// 4 E + digits + 8 binades must fit below T's largest exponent, and as many
+// above its least normal value. An IEEE format has as many of the one as of the
+// other (min_exponent = 3 - max_exponent); a cpp_bin_float may have fewer below.
 template <class T>
 constexpr long window_half_width(long digits) {
-  return (long(std::numeric_limits<T>::max_exponent) - digits) / 4 - 2;
+  using limits = std::numeric_limits<T>;
+  const long room = std::min(long(limits::max_exponent), 3 - long(limits::min_exponent));
+  return (room - digits) / 4 - 2;
 }
 
 // For the hardware types a compile-time constant: 240 for double, 24 for float.
