@@ -8,7 +8,7 @@
 # Goal: err = (s0 + delta - S) / S, S the exact root, and delta / S.
 #
 # Model: every rounding x -> x (1 + d), |d| <= 2^-53 (binary64, round to nearest; in the
-# plain window no operation here over- or underflows, docs/equations.md section 9), each d
+# plain window no operation here over- or underflows, docs/equations.md section 7), each d
 # a free variable, so the proof covers every way the roundings can fall; two_sum and
 # product are exact (high + low = the exact result). The exact root S > 0 solves
 # Q(S) = S (S + u) - phi dy^2 = 0, and the slope there is Q'(S) = 2 S + u = sqrt(disc).

@@ -7,8 +7,10 @@
 //    within a few ulps; one Newton step on the case's polynomial Q (the
 //    quadratic or linear equation whose root the case's closed form is), with
 //    Q(s0) evaluated by error-free transformations, gives s0 + delta within
-//    about 2^-2p |s| of the root, and a bound on that distance computed as it
-//    goes (no a-priori error claim of the stable path enters).
+//    about 2^-2p |s| of the root. In double inside the plain window the bound
+//    is a constant per case, proven by Gappa from the stable path's proven
+//    bound (fixed_bound_<case>); elsewhere it is computed as the step goes (no
+//    a-priori error claim of the stable path enters).
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
 //    rounds as s0 + delta does.
@@ -638,12 +640,10 @@ inline std::optional<traced_solution<double>> rounded_by_fixed_bound(double u, d
   return rounded_by_exact_decision<double>(u, dy, phi, &start);
 }
 
-// solve_rounded, and whether it needed the exact decision (for the tests and
-// the measurements of the slow path's share).
+// Everything but double's fixed-bound step, out of line so that the step's
+// caller stays small.
 template <class T>
-traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
-  static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
-                                      "long double and float128 only");
+[[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
   using std::isfinite;
   if constexpr (std::is_same_v<T, float>) {
     if (auto invalid = reject_invalid(u, dy, phi)) return {*invalid, false};
@@ -651,11 +651,6 @@ traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
     if (rounded_form::round_through_double(u, dy, phi, result)) return {result, false};
     return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
   } else {
-    if constexpr (std::is_same_v<T, double>) {
-      if (inside_plain_window(u, dy, phi)) [[likely]] {
-        if (auto fixed = rounded_by_fixed_bound(u, dy, phi)) return *fixed;
-      }
-    }
     // Outside the window where the Newton step is analysed (invalid input
     // included), straight to the exact decision.
     if (!(in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0)))
@@ -683,6 +678,20 @@ traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
     if (x.valid) start.s = x.high;
     return rounded_by_exact_decision<T>(u, dy, phi, &start);
   }
+}
+
+// solve_rounded, and whether it needed the exact decision (for the tests and
+// the measurements of the slow path's share).
+template <class T>
+traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
+  static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
+                                      "long double and float128 only");
+  if constexpr (std::is_same_v<T, double>) {
+    if (inside_plain_window(u, dy, phi)) [[likely]] {
+      if (auto fixed = rounded_by_fixed_bound(u, dy, phi)) [[likely]] return *fixed;
+    }
+  }
+  return solve_rounded_general(u, dy, phi);
 }
 
 }  // namespace detail
