@@ -4,7 +4,14 @@
 // README quotes (failures, the slow path's share, stable's share of results
 // that are not correctly rounded).
 #include <cstdlib>
+#include <bit>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
 
 #include "harness.hpp"
 
@@ -372,6 +379,75 @@ TEST(RoundedFastPath, NewtonStepRefusesWhatItCannotBound) {
   EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{0x1p-20, 0x1p-110, 2.0, 0x1p-52, 1.0, 1}).valid);
   EXPECT_TRUE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, -2.0, 0x1p-52, 1.0, 0}).valid);
   EXPECT_FALSE(rounded_form::rounds_as_root(rounded_form::approximation<double>{1.0, 0.0, 0.0, false}));
+}
+
+}  // namespace
+}  // namespace contact::testing
+
+namespace contact::testing {
+namespace {
+
+// The fast path's constants are the ones proofs.gappa.rounded proves sufficient:
+// proofs/rounded_bounds.txt holds both to the same figures.
+TEST(RoundedFastPath, FixedBoundsAreTheProvenOnes) {
+  std::ifstream in(CONTACT_ROUNDED_BOUNDS);
+  ASSERT_TRUE(in) << CONTACT_ROUNDED_BOUNDS;
+  const std::map<std::string, double> code = {
+      {"contact", rounded_form::fixed_bound_contact},
+      {"impact", rounded_form::fixed_bound_impact},
+      {"release", rounded_form::fixed_bound_release},
+      {"contact_cancellation_limit", rounded_form::contact_cancellation_limit},
+      {"impact_separation_limit", rounded_form::impact_separation_limit}};
+  std::set<std::string> seen;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line.substr(0, line.find('#')));
+    std::string name, value;
+    if (!(fields >> name >> value)) continue;
+    ASSERT_TRUE(code.count(name)) << "unknown name in rounded_bounds.txt: " << name;
+    EXPECT_EQ(code.at(name), std::strtod(value.c_str(), nullptr)) << name;
+    seen.insert(name);
+  }
+  EXPECT_EQ(seen.size(), code.size());
+}
+
+// The step's s0 is the stable formula's value bit for bit (the Gappa models take the
+// stable path's proven bound for it), computed here to share its square root.
+TEST(RoundedFastPath, FixedStepStartsFromTheStableFormula) {
+  std::mt19937_64 engine(20261123);
+  std::uniform_int_distribution<int> exponent(-80, 80), sign(0, 1);
+  std::uniform_real_distribution<double> significand(1, 2);
+  auto draw = [&](bool positive) {
+    const double x = std::ldexp(significand(engine), exponent(engine));
+    return positive || sign(engine) ? x : -x;
+  };
+  long counts[3] = {0, 0, 0};
+  for (int i = 0; i < 200000; ++i) {
+    const double u = draw(false), dy = draw(false), phi = draw(true);
+    if (dy < 0 && u > -dy) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(rounded_form::impact_step(u, dy, phi).s0),
+                std::bit_cast<std::uint64_t>(stable_form::impact(u, -dy, phi)));
+      ++counts[0];
+    } else if (dy > 0) {
+      const bool contact = detail::stays_in_contact<true>(u, dy, phi);
+      const double s0 = contact ? rounded_form::contact_step(u, dy, phi).s0 : rounded_form::release_step(u, dy, phi).s0;
+      const double stable = contact ? stable_form::contact(u, dy, phi) : stable_form::release(u, dy, phi);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(s0), std::bit_cast<std::uint64_t>(stable)) << u << " " << dy << " " << phi;
+      ++counts[contact ? 1 : 2];
+    }
+  }
+  for (long count : counts) EXPECT_GT(count, 10000);
+}
+
+// Each fast-path condition fails where its bound is not proven: (A.31) with a heavy
+// cancellation of 2 phi dy and u, (A.30) with the two roots of Q close together.
+TEST(RoundedFastPath, FixedStepConditionsRefuseWhatIsNotProven) {
+  EXPECT_TRUE(rounded_form::contact_step(1.0, 1.0, 1.0).bounded);
+  EXPECT_FALSE(rounded_form::contact_step(2.0 - 0x1p-30, 1.0, 1.0).bounded);  // s ~ 2^-31 dy
+  EXPECT_TRUE(rounded_form::impact_step(2.0, -0.5, 1.0).bounded);
+  // u just above -dy with a large phi: s near dy, the other root at phi dy / (1 + phi)
+  EXPECT_FALSE(rounded_form::impact_step(1.0 + 0x1p-40, -1.0, 0x1p20).bounded);
+  EXPECT_TRUE(rounded_form::release_step(-1.0, 1.0, 1.0).bounded);
 }
 
 }  // namespace

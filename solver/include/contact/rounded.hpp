@@ -7,8 +7,10 @@
 //    within a few ulps; one Newton step on the case's polynomial Q (the
 //    quadratic or linear equation whose root the case's closed form is), with
 //    Q(s0) evaluated by error-free transformations, gives s0 + delta within
-//    about 2^-2p |s| of the root, and a bound on that distance computed as it
-//    goes (no a-priori error claim of the stable path enters).
+//    about 2^-2p |s| of the root. In double inside the plain window the bound
+//    is a constant per case, proven by Gappa from the stable path's proven
+//    bound (fixed_bound_<case>); elsewhere it is computed as the step goes (no
+//    a-priori error claim of the stable path enters).
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
 //    rounds as s0 + delta does.
@@ -34,6 +36,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "cases.hpp"
@@ -452,6 +455,91 @@ bool rounds_as_root(const approximation<T>& x) {
   return T(x.low + x.bound) < gaps.above && T(x.low - x.bound) > -gaps.below;
 }
 
+// ---- double: one Newton step with a fixed, proven bound ------------------------
+//
+// Inside the plain window, in double, the step below comes with a bound K |s0| on
+// |s0 + delta - s*| that is a constant per case: proofs/gappa/rounded_<case>.g
+// proves the relative bound from the stable path's proven bound on |s0 - s*|
+// (claimed_bounds.txt), and gappa_rounded checks that K covers it and the
+// rounding test's own roundings (proofs/rounded_bounds.txt, which rounded_test
+// holds these constants to). Each case's slope is the exact derivative at the
+// root, a quantity the stable formula already has (1 + phi, or the square root
+// of the discriminant), so its reciprocal is computed alongside s0 rather than
+// after the residual; Q(s0) is evaluated with error-free products and sums.
+inline constexpr double fixed_bound_contact = 0x1p-94;
+inline constexpr double fixed_bound_impact = 0x1p-93;
+inline constexpr double fixed_bound_release = 0x1p-96;
+// Where the bound is proven: in (A.31) the inputs' cancellation is limited,
+// phi dy <= 64 (1 + phi) |s0|; in (A.30) the two roots of Q are apart, sqrt(disc)
+// >= (1 + phi) |s0| / 16 (Newton's quadratic term grows as they merge).
+inline constexpr double contact_cancellation_limit = 64;
+inline constexpr double impact_separation_limit = 0x1p-4;
+
+struct fixed_step {
+  double s0, delta;
+  bool bounded;  // false: outside the conditions the fixed bound is proven under
+};
+
+// (A.31): Q(s) = (1 + phi) s - (2 phi dy - u); Q(s0) = phi (2 dy - s0) - (u + s0) exactly
+// as (m.high - w.high) + (m.low + phi g.low - w.low), m.high and w.high close.
+inline fixed_step contact_step(double u, double dy, double phi) {
+  using std::fabs;
+  const double denominator = 1 + phi;
+  const double s0 = std::fma(phi, 2 * dy, -u) / denominator;  // stable_form::contact
+  const double inverse = 1 / denominator;
+  const auto g = detail::two_sum(2 * dy, -s0);
+  const auto m = product(phi, g.high);
+  const auto w = detail::two_sum(u, s0);
+  const double r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);
+  return {s0, r * inverse, phi * dy <= contact_cancellation_limit * (denominator * fabs(s0))};
+}
+
+// (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc).
+inline fixed_step impact_step(double u, double dy, double phi) {
+  using std::fabs;
+  const double gap = -dy, push = phi * gap;  // stable_form::impact, sharing its square root
+  const double root = std::sqrt(std::fma(u, u, 4 * (push * (u - gap))));
+  const double denominator = 1 + phi;
+  const double s0 = -((u + 2 * push) + root) / (2 * denominator);
+  const double inverse = 1 / root;
+  const auto w = detail::two_sum(s0, u);
+  const auto a = product(s0, w.high);
+  const double a_low = s0 * w.low + a.low;
+  const auto g = detail::two_sum(dy, -s0);
+  const auto k = product(g.high, g.high);
+  const double k_low = 2 * g.high * g.low + k.low;
+  const auto m = product(phi, k.high);
+  const double m_low = phi * k_low + m.low;
+  const double q = (a.high + m.high) + (a_low + m_low);
+  return {s0, q * inverse, root >= impact_separation_limit * (denominator * fabs(s0))};
+}
+
+// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*: always bounded.
+inline fixed_step release_step(double u, double dy, double phi) {
+  const double stiffness_term = (phi * dy) * dy;  // stable_form::release, sharing its square root
+  const double root = std::sqrt(std::fma(u, u, 4 * stiffness_term));
+  const double s0 = u > 0 ? 2 * stiffness_term / (u + root) : (root - u) / 2;
+  const double inverse = 1 / root;
+  const auto w = detail::two_sum(s0, u);
+  const auto a = product(s0, w.high);
+  const double a_low = s0 * w.low + a.low;
+  const auto b = product(phi, dy);
+  const auto c = product(b.high, dy);
+  const double c_low = b.low * dy + c.low;
+  const double q = (a.high - c.high) + (a_low - c_low);
+  return {s0, -q * inverse, true};
+}
+
+// The root lies in [s0 + delta - K |s0|, s0 + delta + K |s0|], and both ends as
+// rounded here enclose that interval (K covers these roundings too); rounding
+// to nearest is monotonic, so when both ends round alike the root rounds so.
+inline bool rounds_alike(double s0, double delta, double factor, double& rounded) {
+  const double margin = factor * std::fabs(s0);
+  const double below = s0 + (delta - margin);
+  rounded = s0 + (delta + margin);
+  return below == rounded;
+}
+
 // float: the stable path's formulas run in double. Their proven bounds
 // (proofs/claimed_bounds.txt: at most 6.51 ulps of double at the root, every
 // branch, before the clamps) put the root within 2^-49 |s| of the double result:
@@ -523,12 +611,39 @@ template <class T>
   return {{s, stable.which}, true};
 }
 
-// solve_rounded, and whether it needed the exact decision (for the tests and
-// the measurements of the slow path's share).
+// double inside the plain window: the fixed-bound step. Empty where its
+// conditions fail (the run-time bound then decides); a failed rounding test
+// goes to the exact decision, from s0 + delta.
+inline std::optional<traced_solution<double>> rounded_by_fixed_bound(double u, double dy, double phi) {
+  rounded_form::fixed_step step;
+  contact_case which;
+  double factor;
+  if (dy < 0) {
+    if (u <= -dy) return traced_solution<double>{{-u, contact_case::free}, false};  // (A.29) s = -u, exact
+    step = rounded_form::impact_step(u, dy, phi);
+    which = contact_case::impact;
+    factor = rounded_form::fixed_bound_impact;
+  } else if (stays_in_contact<true>(u, dy, phi)) {
+    step = rounded_form::contact_step(u, dy, phi);
+    which = contact_case::contact;
+    factor = rounded_form::fixed_bound_contact;
+  } else {
+    step = rounded_form::release_step(u, dy, phi);
+    which = contact_case::release;
+    factor = rounded_form::fixed_bound_release;
+  }
+  if (!step.bounded || !magnitude_inside_plain_window(step.s0)) return std::nullopt;
+  double rounded;
+  if (rounded_form::rounds_alike(step.s0, step.delta, factor, rounded)) [[likely]]
+    return traced_solution<double>{{rounded, which}, false};
+  const solution<double> start{step.s0 + step.delta, which};
+  return rounded_by_exact_decision<double>(u, dy, phi, &start);
+}
+
+// Everything but double's fixed-bound step, out of line so that the step's
+// caller stays small.
 template <class T>
-traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
-  static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
-                                      "long double and float128 only");
+[[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
   using std::isfinite;
   if constexpr (std::is_same_v<T, float>) {
     if (auto invalid = reject_invalid(u, dy, phi)) return {*invalid, false};
@@ -563,6 +678,20 @@ traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
     if (x.valid) start.s = x.high;
     return rounded_by_exact_decision<T>(u, dy, phi, &start);
   }
+}
+
+// solve_rounded, and whether it needed the exact decision (for the tests and
+// the measurements of the slow path's share).
+template <class T>
+traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
+  static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
+                                      "long double and float128 only");
+  if constexpr (std::is_same_v<T, double>) {
+    if (inside_plain_window(u, dy, phi)) [[likely]] {
+      if (auto fixed = rounded_by_fixed_bound(u, dy, phi)) [[likely]] return *fixed;
+    }
+  }
+  return solve_rounded_general(u, dy, phi);
 }
 
 }  // namespace detail
