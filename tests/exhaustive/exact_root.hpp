@@ -107,12 +107,17 @@ struct input {
 template <class T>
 struct format_of {
   static constexpr int precision = T::precision, least_exponent = T::least_exponent;
+  static constexpr bool subnormals = T::subnormals;
 
   // ulp(x) for x in binade j (2^j <= |x| < 2^(j + 1)) is 2^(j - p + 1), as
-  // proofs/claimed_bounds.txt defines it. Below the least normal value the
-  // format (it has no subnormals) holds only 0 and +-2^least_exponent, and
-  // their spacing is the ulp there, as 2^-1074 is double's below 2^-1022.
-  static int ulp_exponent(int binade) { return binade < least_exponent ? least_exponent : binade - precision + 1; }
+  // proofs/claimed_bounds.txt defines it. Below the least normal value it is
+  // the spacing there, as 2^-1074 is double's below 2^-1022: that of the
+  // subnormals, or without them 2^least_exponent, the format holding only 0
+  // and +-2^least_exponent there.
+  static int ulp_exponent(int binade) {
+    if (binade >= least_exponent) return binade - precision + 1;
+    return subnormals ? least_exponent - precision + 1 : least_exponent;
+  }
 
   // The binade j of s* != 0, least_exponent - 1 below the least normal value,
   // searched from guess: |s*| < 2^j exactly when sign(s*) R(sign(s*) 2^j) > 0.
@@ -164,6 +169,8 @@ struct format_of {
   // the midpoints to the neighbours of s, the neighbours below the least
   // normal value being those of the unbounded exponent; so 0 takes the roots
   // below the midpoint under the least normal value, which takes the tie.
+  // With subnormals the neighbours are the format's own down to 0, which
+  // takes the roots within half the least subnormal, ties included (0 is even).
   template <class Integer>
   static bool is_rounded_root(const input<Integer>& x, const T& s) {
     using std::isinf;
@@ -173,11 +180,15 @@ struct format_of {
     if (isinf(s)) return s > 0 ? x.residual_sign(limit) <= 0 : x.residual_sign(-limit) >= 0;
     const auto least = power_of_two<Integer>(1, least_exponent);
     const auto least_midpoint = least - power_of_two<Integer>(1, least_exponent - precision - 1);
+    if (s == 0 && subnormals) {
+      const auto half_least_subnormal = power_of_two<Integer>(1, least_exponent - precision);
+      return x.residual_sign(-half_least_subnormal) <= 0 && x.residual_sign(half_least_subnormal) >= 0;
+    }
     if (s == 0) return x.residual_sign(-least_midpoint) < 0 && x.residual_sign(least_midpoint) > 0;
     const auto exact_s = exactly<Integer>(double(s));
     auto midpoint_towards = [&](const T& neighbour) {
       if (isinf(neighbour)) return s > 0 ? limit : -limit;
-      if (neighbour == 0) return s > 0 ? least_midpoint : -least_midpoint;
+      if (neighbour == 0 && !subnormals) return s > 0 ? least_midpoint : -least_midpoint;
       return midpoint(exact_s, exactly<Integer>(double(neighbour)));
     };
     const auto low = midpoint_towards(detail::next_down(s)), high = midpoint_towards(detail::next_up(s));
@@ -186,12 +197,13 @@ struct format_of {
     return (at_low != 0 && at_high != 0) || is_even(s);
   }
 
-  // The last bit of the significand is 0 (0 included).
+  // The last bit of the significand is 0 (0 included): s is an even multiple
+  // of its ulp.
   static bool is_even(const T& s) {
     if (s == 0) return true;
     int e = 0;
-    const double m = std::ldexp(double(frexp(s, &e)), precision);
-    return std::fmod(m, 2.0) == 0;
+    frexp(s, &e);
+    return std::fmod(std::ldexp(double(s), -ulp_exponent(e - 1)), 2.0) == 0;
   }
 };
 

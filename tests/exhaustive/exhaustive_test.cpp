@@ -1,27 +1,29 @@
-// An exhaustive check of the stable path on miniature binary formats: every
-// triple (u, dy, phi) of a few boxes of 6-bit formats, against exact arithmetic.
-// It stands for a proof of the stable path at this precision (ctest label
-// proofs). For each triple:
+// An exhaustive check of the stable path and the correctly rounded mode on
+// miniature binary formats: every triple (u, dy, phi) of a few boxes of 6-bit
+// formats, against exact arithmetic. It stands for a proof of both at this
+// precision (ctest label proofs). For each triple:
 //
 //   - the case is the exact case, the sign of R(dy) (docs/equations.md,
 //     section 2): of u + dy for dy <= 0, of u + dy - phi dy for dy > 0;
-//   - s lies on its case's side of dy;
+//   - s lies on its case's side of dy (for solve_rounded weakly: s may be dy);
 //   - s is never NaN, and infinite only where s* lies beyond the largest
 //     finite value, on the same side;
 //   - s is as accurate as the method promises: for solve_stable within its
 //     branch's bound of proofs/claimed_bounds.txt carried over to the format's
-//     precision (below); a correctly rounded method would promise s* rounded to
-//     nearest, ties to even (exact::format_of::is_rounded_root), and is checked
-//     by adding it to `methods` in main.
+//     precision (below); for solve_rounded, s* rounded to nearest, ties to
+//     even, at the subnormal spacing below the least normal value
+//     (exact::format_of::is_rounded_root), and a zero of the sign rounded.hpp
+//     gives it.
 //
 // Nothing computes s*: every check is a sign of R at a dyadic point
 // (exact_root.hpp). Each box must also reach all four cases on both the plain
 // path and the scaled one where it says it does, or the box is a failure.
 //
-// Prints one line, "exhaustive: N triples checked, F failures", then the
-// first failures if any, and exits non-zero when F > 0. With --worst it then
-// prints, per format and branch, the largest error found in ulps and the share
-// of answers that are correctly rounded (a report; nothing is asserted on it).
+// Prints one line, "exhaustive: N triples checked, F failures", the counts
+// per method, then the first failures if any, and exits non-zero when F > 0.
+// With --worst it then prints, per method, format and branch, the largest
+// error found in ulps and the share of answers that are correctly rounded (a
+// report; nothing is asserted on it).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +37,7 @@
 #include <vector>
 
 #include "contact/harness/claimed_bounds.hpp"
+#include "contact/rounded.hpp"
 #include "contact/stable.hpp"
 #include "exact_root.hpp"
 #include "mini_float.hpp"
@@ -57,6 +60,11 @@ using format = mini_float<6, -20, 21, Fused>;
 // A cluster of four terms of the exact sign (down to 2^-33) does not fit, and
 // the plain window shrinks to [1, 1]: its room below 1 bounds it, not above.
 using few_below_one = mini_float<6, -12, 21, false>;
+
+// The fused format with subnormals: IEEE 754's rules in miniature (as many
+// binades below 1 as above, gradual underflow), which the correctly rounded
+// mode asks for. Below 2^-20 the values are the multiples of 2^-25.
+using ieee = mini_float<6, -20, 21, true, true>;
 
 // 0 and every value of the binades 2^low <= |x| < 2^(high + 1).
 struct binades {
@@ -87,10 +95,28 @@ constexpr box bottom_of_few{"bottom", {-12, -10}, {-12, -10}, {-3, 3}};
 constexpr box stiff{"stiff", {-3, 2}, {-3, -2}, {18, 21}, false, false};  // no contact: u < dy (phi - 1)
 constexpr box soft{"soft", {-3, 2}, {-3, -2}, {-20, -17}};
 constexpr box soft_of_few{"soft", {-3, 2}, {-3, -2}, {-12, -9}};
+// Smaller boxes of the same kinds for the correctly rounded mode, which takes
+// about five times as long per triple (the exact decision outside the window).
+// Central: every ratio |u| / |dy| from about 2^-3 to 2^6 and phi from 2^-3 to 2^4,
+// both case boundaries on both sides of the window's edges.
+constexpr box central_of_rounded{"central", {-3, 2}, {-3, -2}, {-3, 3}, true, true};
+constexpr box top_of_rounded{"top", {20, 21}, {20, 21}, {-2, 2}};
+// with the subnormals of u and dy (values_in), and roots among them
+constexpr box bottom_of_rounded{"bottom", {-20, -19}, {-20, -19}, {-2, 2}};
+constexpr box stiff_of_rounded{"stiff", {-1, 0}, {-3, -2}, {19, 21}, false, false};
+// with the subnormals of phi: the (A.31) root within about phi of 2 phi dy - u
+constexpr box soft_of_rounded{"soft", {-2, 1}, {-3, -2}, {-20, -19}};
 
+// A range from the least normal binade takes the subnormals too.
 template <class T>
 std::vector<T> values_in(binades range, bool both_signs) {
   std::vector<T> values{T(0)};
+  if (T::subnormals && range.low == T::least_exponent)
+    for (int m = 1; m < (1 << (T::precision - 1)); ++m) {
+      const T x = ldexp(T(m), T::least_exponent - T::precision + 1);
+      values.push_back(x);
+      if (both_signs) values.push_back(-x);
+    }
   for (int e = range.low; e <= range.high; ++e)
     for (int m = 1 << (T::precision - 1); m < (1 << T::precision); ++m) {
       const T x = ldexp(T(m), e - T::precision + 1);
@@ -165,6 +191,14 @@ class checker {
   accuracy promise_;
   long bound_units_[2][5] = {};
 
+  // The sign of a zero result (rounded.hpp): free gives -u exactly; a root of
+  // exactly 0 otherwise gives +0, and a nonzero root the zero of its sign.
+  template <class Integer>
+  static bool zero_is_negative(const exact::input<Integer>& x, const T& u, contact_case c) {
+    if (c == contact_case::free) return !signbit(u);
+    return x.root_sign() < 0;
+  }
+
   template <class Integer>
   std::optional<std::string> failure_in(const T& u, const T& dy, const T& phi, const solution<T>& result) const {
     using std::isinf;
@@ -174,15 +208,21 @@ class checker {
     if (result.which != expected) return "the case is " + std::string(name_of(expected));
     const T& s = result.s;
     if (isnan(s)) return "NaN";
-    if (!lies_on_its_side(result.which, s, dy)) return "s on the wrong side of dy";
+    if (promise_ == accuracy::correctly_rounded) {
+      // weakly: the value nearest a root within half an ulp of dy is dy
+      if (!lies_on_its_side(result.which, s, dy) && s != dy) return "s on the wrong side of dy";
+    } else if (!lies_on_its_side(result.which, s, dy)) {
+      return "s on the wrong side of dy";
+    }
     if (isinf(s)) {
       const auto largest = exact::exactly<Integer>(double((std::numeric_limits<T>::max)()));
       const bool root_beyond = s > 0 ? x.residual_sign(largest) < 0 : x.residual_sign(-largest) > 0;
       if (!root_beyond) return "infinite, but the root is not beyond the largest finite value";
     }
     if (promise_ == accuracy::correctly_rounded) {
-      if (format::is_rounded_root(x, s)) return std::nullopt;
-      return "not the root rounded to nearest";
+      if (!format::is_rounded_root(x, s)) return "not the root rounded to nearest";
+      if (s == 0 && signbit(s) != zero_is_negative(x, u, expected)) return "the zero has the wrong sign";
+      return std::nullopt;
     }
     if (isinf(s) || format::within(x, s, bound_units_[u > 0][int(expected)], bound_fraction_bits)) return std::nullopt;
     return "the error is beyond the bound";
@@ -317,19 +357,28 @@ solution<T> stable(const T& u, const T& dy, const T& phi) {
   return solve_stable(u, dy, phi);
 }
 
-// Every box of `boxes` for every method, on format T.
 template <class T>
-void check_format(const char* format_name, std::initializer_list<box> boxes, tally& total, bool report) {
-  const method<T> methods[] = {
-      {"stable", stable<T>, accuracy::claimed_bound},
-      // {"rounded", rounded<T>, accuracy::correctly_rounded},  once solve_rounded exists
-  };
-  for (const auto& m : methods) {
-    tally of_format;
-    for (const box& b : boxes) of_format.add(check_box(m, b, format_name, report));
-    total.add(of_format);
-    if (report) print_report(format_name, of_format);
+solution<T> rounded(const T& u, const T& dy, const T& phi) {
+  return solve_rounded(u, dy, phi);
+}
+
+// The methods, each with its own total.
+enum method_id { stable_method, rounded_method, method_count };
+constexpr const char* method_names[method_count] = {"stable", "rounded"};
+
+// Every box of `boxes` for the method, on format T.
+template <class T>
+void check_format(method_id id, const char* format_name, std::initializer_list<box> boxes, tally (&totals)[method_count],
+                  bool report) {
+  method<T> m{method_names[stable_method], stable<T>, accuracy::claimed_bound};
+  if (id == rounded_method) {
+    if constexpr (rounded_available<T>) m = {method_names[rounded_method], rounded<T>, accuracy::correctly_rounded};
+    else throw std::logic_error("solve_rounded does not take this format");
   }
+  tally of_format;
+  for (const box& b : boxes) of_format.add(check_box(m, b, format_name, report));
+  totals[id].add(of_format);
+  if (report) std::printf("%s, %s:\n", m.name, format_name), print_report(format_name, of_format);
 }
 
 }  // namespace
@@ -338,11 +387,18 @@ void check_format(const char* format_name, std::initializer_list<box> boxes, tal
 int main(int argc, char** argv) {
   using namespace contact::testing;
   const bool report = argc > 1 && std::strcmp(argv[1], "--worst") == 0;
+  tally totals[method_count];
+  check_format<format<true>>(stable_method, "fused", {central, top, bottom, stiff, soft}, totals, report);
+  check_format<format<false>>(stable_method, "unfused", {central, top, bottom, stiff, soft}, totals, report);
+  check_format<few_below_one>(stable_method, "few-below-one", {central_of_few, bottom_of_few, soft_of_few}, totals, report);
+  check_format<ieee>(stable_method, "ieee", {bottom, soft}, totals, report);
+  check_format<ieee>(rounded_method, "ieee",
+                     {central_of_rounded, top_of_rounded, bottom_of_rounded, stiff_of_rounded, soft_of_rounded}, totals, report);
   tally total;
-  check_format<format<true>>("fused", {central, top, bottom, stiff, soft}, total, report);
-  check_format<format<false>>("unfused", {central, top, bottom, stiff, soft}, total, report);
-  check_format<few_below_one>("few-below-one", {central_of_few, bottom_of_few, soft_of_few}, total, report);
+  for (const tally& t : totals) total.add(t);
   std::printf("exhaustive: %ld triples checked, %ld failures\n", total.checked, total.failed);
+  for (int id = 0; id < method_count; ++id)
+    std::printf("  %s: %ld triples, %ld failures\n", method_names[id], totals[id].checked, totals[id].failed);
   for (const auto& [position, what] : total.first_failures) std::printf("  %s\n", what.c_str());
   return total.failed > 0 ? 1 : 0;
 }

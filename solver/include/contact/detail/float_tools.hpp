@@ -117,12 +117,17 @@ int sign_of_exact_sum(const T (&terms)[N]) {
 // digits bits, the neighbour is (m + 1) 2^(e - digits), or, from a negative
 // power of two into the binade below, (1 - 2^digits) 2^(e - digits - 1); every
 // step is exact, and ldexp flushes to zero what falls below the least normal
-// value, the neighbour there of a type without subnormals.
+// value, the neighbour there of a type without subnormals. With subnormals,
+// the values below twice the least normal value are the multiples of the least
+// subnormal, so the neighbour is the exact sum.
 template <class T>
 T upper_neighbour_by_frexp(const T& x) {
-  static_assert(std::numeric_limits<T>::has_denorm != std::denorm_present, "steps of normal numbers only");
+  using std::fabs;
   using std::frexp;
   using std::ldexp;
+  if constexpr (std::numeric_limits<T>::has_denorm == std::denorm_present) {
+    if (fabs(x) < 2 * (std::numeric_limits<T>::min)()) return x + std::numeric_limits<T>::denorm_min();
+  }
   if (x == 0) return (std::numeric_limits<T>::min)();
   int exponent = 0;
   const int digits = precision_of<T>();
