@@ -145,3 +145,33 @@ TEST(WindowRescale, BinadesAndExactShifts) {
 }
 
 }  // namespace
+
+namespace {
+
+// scaled<T>'s normalisation and shift on bits agree with frexp and ldexp,
+// including the subnormals, zeros, infinities and shifts out of T's range.
+template <class T>
+void check_scaled_bits(std::uint64_t seed) {
+  using S = contact::detail::scaled<T>;
+  harness::seeded_source source(seed);
+  const T specials[] = {T(0), T(-0.0), std::numeric_limits<T>::infinity(), std::numeric_limits<T>::denorm_min(),
+                        std::numeric_limits<T>::min(), std::numeric_limits<T>::max()};
+  const long range = harness::highest_exponent<T>() - harness::lowest_exponent<T>() + 4;
+  for (int i = 0; i < 200000; ++i) {
+    const T x = source.integer(0, 20) == 0 ? specials[source.integer(0, 5)] : harness::any_finite<T>(source);
+    const long e = source.integer(-range, range);
+    int k = 0;
+    const T m = std::frexp(x, &k);
+    const S n = S::normalized(x, e);
+    ASSERT_EQ(std::bit_cast<bits<T>>(n.significand), std::bit_cast<bits<T>>(m)) << x;
+    if (x != 0 && std::isfinite(x)) ASSERT_EQ(n.exponent, e + k) << x;
+    ASSERT_EQ(std::bit_cast<bits<T>>(S::shifted(x, e)), std::bit_cast<bits<T>>(std::ldexp(x, int(e)))) << x << " " << e;
+  }
+}
+
+TEST(WindowRescale, ScaledOnBitsAgreesWithFrexpAndLdexp) {
+  check_scaled_bits<double>(7);
+  check_scaled_bits<float>(8);
+}
+
+}  // namespace

@@ -9,9 +9,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "float_tools.hpp"
 
@@ -30,6 +33,16 @@ struct scaled {
     using std::frexp;
     using std::isfinite;
     scaled r;
+    if constexpr (is_binary_hardware) {
+      // frexp of a normal m, on its bits: the exponent field set to that of [0.5, 1)
+      const bits b = std::bit_cast<bits>(m);
+      const int field = int((b >> significand_bits) & field_mask);
+      if (field != 0 && field != int(field_mask)) {
+        r.significand = std::bit_cast<T>(bits((b & ~(field_mask << significand_bits)) | (bits(bias - 1) << significand_bits)));
+        r.exponent = e + field - (bias - 1);
+        return r;
+      }
+    }
     if (m == 0 || !isfinite(m)) {
       r.significand = m;
       return r;
@@ -43,6 +56,13 @@ struct scaled {
   // x * 2^shift, clamped so that huge shifts saturate to 0 or infinity.
   static T shifted(const T& x, long shift) {
     using std::ldexp;
+    if constexpr (is_binary_hardware) {
+      // ldexp of a normal x whose result is normal, on its bits
+      const bits b = std::bit_cast<bits>(x);
+      const long field = long((b >> significand_bits) & field_mask);
+      if (field != 0 && field != long(field_mask) && field + shift > 0 && field + shift < long(field_mask))
+        return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
+    }
     constexpr long limit = INT_MAX / 2;
     if (shift > limit) shift = limit;
     if (shift < -limit) shift = -limit;
@@ -92,6 +112,13 @@ struct scaled {
 
  private:
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
+
+  // binary32 and binary64 take frexp and ldexp's common case on their bits
+  static constexpr bool is_binary_hardware = std::is_same_v<T, float> || std::is_same_v<T, double>;
+  using bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+  static constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
+  static constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+  static constexpr bits field_mask = bits(2 * std::numeric_limits<T>::max_exponent - 1);
 };
 
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
