@@ -104,15 +104,13 @@ T scale_by_power_of_two(const T& x, int k) {
 }
 
 // The common input: valid, u, dy and phi non-zero and inside the plain window,
-// phi > 0. For binary32 and binary64 a test of bits; other types have no such
-// shortcut and take safe_window's general test.
+// phi > 0, as a test of bits. Other types than binary32 and binary64 have no
+// such shortcut and take safe_window's general test.
 template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 bool inside_plain_window(const T& u, const T& dy, const T& phi) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
-    return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) &&
-           magnitude_inside_plain_window(phi) && !std::signbit(phi);
-  else
-    return false;
+  return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) && magnitude_inside_plain_window(phi) &&
+         !std::signbit(phi);
 }
 
 }  // namespace contact::detail
