@@ -67,6 +67,16 @@ Num release(const Num& u, const Num& dy, const Num& phi) {
 
 namespace detail {
 
+// The sign of the exact sum u + dy - phi dy in plain T, with phi dy as the
+// exact pair of two_prod. Out of line: the few inputs that need it pay for
+// the call, the common path keeps a small stack frame.
+template <class T>
+[[gnu::noinline]] bool exact_sum_nonnegative(T u, T dy, T phi) {
+  const auto product = two_prod(phi, dy);
+  const T terms[4] = {u, dy, -product.high, -product.low};
+  return sign_of_exact_sum(terms) >= 0;
+}
+
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
 // enters as the exact pair of two_prod; the sign is then that of an exact sum.
 //
@@ -81,9 +91,7 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
     const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
     const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + fabs(dy) + fabs(phi * dy));
     if (fabs(estimate) > margin) return estimate > 0;
-    const auto product = two_prod(phi, dy);
-    const T terms[4] = {u, dy, -product.high, -product.low};
-    return sign_of_exact_sum(terms) >= 0;
+    return exact_sum_nonnegative(u, dy, phi);
   }
   const scaled<T> phi_s(phi), dy_s(dy);
   const auto significand_product = two_prod(phi_s.significand, dy_s.significand);  // never underflows
@@ -154,7 +162,7 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
 // to solve_anywhere.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
-[[gnu::noinline]] solution<T> solve_outside_plain_window(const T& u, const T& dy, const T& phi) {
+[[gnu::noinline]] solution<T> solve_outside_plain_window(T u, T dy, T phi) {
   using std::isfinite;
   // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
   // for s = -u = 0, a zero of the other sign than plain T's fma gives
