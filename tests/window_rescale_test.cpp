@@ -175,3 +175,32 @@ TEST(WindowRescale, ScaledOnBitsAgreesWithFrexpAndLdexp) {
 }
 
 }  // namespace
+
+namespace {
+
+// sign_of_dominant_term decides only where one term outweighs the rest, and
+// then agrees with the exact sum.
+TEST(WindowRescale, DominantTermDecidesOnlyWhereItOutweighsTheRest) {
+  using S = contact::detail::scaled<double>;
+  using terms = std::array<S, 4>;
+  using contact::detail::sign_of_dominant_term;
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(0.0), S(0.0), S(0.0)}), 0);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(0.0), S(0.99)}), -1);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(1.0), S(0.99)}), -1);  // exponents 4 and 1
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(2.0), S(0.99)}), 0);   // exponents 4 and 2
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0x1p-900), S(0x1p100), S(-0x1p97), S(0.0)}), 1);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0x1p-900), S(0x1p100), S(-0x1.fp98), S(0.0)}), 0);
+  harness::seeded_source source(9);
+  for (int i = 0; i < 100000; ++i) {
+    terms t;
+    double plain[4];
+    for (int k = 0; k < 4; ++k) {
+      plain[k] = source.integer(0, 9) == 0 ? 0.0 : harness::random_sign(source, harness::log_uniform<double>(source, -8, 8));
+      t[k] = S(plain[k]);
+    }
+    const int sign = sign_of_dominant_term(t);
+    if (sign != 0) ASSERT_EQ(sign, contact::detail::sign_of_exact_sum(plain));
+  }
+}
+
+}  // namespace

@@ -99,6 +99,8 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   const std::array<scaled<T>, 4> terms = {
       scaled<T>(u), dy_s, scaled<T>::normalized(-significand_product.high, product_exponent),
       scaled<T>::normalized(-significand_product.low, product_exponent)};
+  // far from the boundary one term decides, exactly, without sorting the terms
+  if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
   return sign_of_exact_sum(terms) >= 0;
 }
 

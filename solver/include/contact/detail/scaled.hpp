@@ -122,6 +122,21 @@ struct scaled {
   static constexpr bits field_mask = bits(2 * std::numeric_limits<T>::max_exponent - 1);
 };
 
+// The sign of the exact sum when one term outweighs all the others together,
+// else 0. A non-zero scaled x = m 2^e has |x| in [2^(e-1), 2^e), so a term
+// whose exponent lies at least 3 above every other's exceeds their sum
+// (below (N-1) 2^(e-3), which is at most 2^(e-1) for N <= 5).
+template <class T, std::size_t N>
+  requires(N <= 5)
+int sign_of_dominant_term(const std::array<scaled<T>, N>& terms) {
+  std::size_t top = 0;  // the term of largest exponent; terms[0] while all are 0
+  for (std::size_t i = 1; i < N; ++i)
+    if (terms[i].significand != 0 && (terms[top].significand == 0 || terms[i].exponent > terms[top].exponent)) top = i;
+  for (std::size_t i = 0; i < N; ++i)
+    if (i != top && terms[i].significand != 0 && terms[i].exponent > terms[top].exponent - 3) return 0;
+  return terms[top].sign();  // 0 when every term is 0
+}
+
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
 // by exponent and cut into clusters wherever two neighbours lie more than
 // digits + 3 binades apart; a non-zero cluster sum is at least the least
