@@ -92,16 +92,17 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
     const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + fabs(dy) + fabs(phi * dy));
     if (fabs(estimate) > margin) return estimate > 0;
     return exact_sum_nonnegative(u, dy, phi);
+  } else {  // discarded, branches and all, where plain
+    const scaled<T> phi_s(phi), dy_s(dy);
+    const auto significand_product = two_prod(phi_s.significand, dy_s.significand);  // never underflows
+    const long product_exponent = phi_s.exponent + dy_s.exponent;
+    const std::array<scaled<T>, 4> terms = {
+        scaled<T>(u), dy_s, scaled<T>::normalized(-significand_product.high, product_exponent),
+        scaled<T>::normalized(-significand_product.low, product_exponent)};
+    // far from the boundary one term decides, exactly, without sorting the terms
+    if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
+    return sign_of_exact_sum(terms) >= 0;
   }
-  const scaled<T> phi_s(phi), dy_s(dy);
-  const auto significand_product = two_prod(phi_s.significand, dy_s.significand);  // never underflows
-  const long product_exponent = phi_s.exponent + dy_s.exponent;
-  const std::array<scaled<T>, 4> terms = {
-      scaled<T>(u), dy_s, scaled<T>::normalized(-significand_product.high, product_exponent),
-      scaled<T>::normalized(-significand_product.low, product_exponent)};
-  // far from the boundary one term decides, exactly, without sorting the terms
-  if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
-  return sign_of_exact_sum(terms) >= 0;
 }
 
 template <bool plain, class T, class Formula>
