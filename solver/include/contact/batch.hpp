@@ -6,9 +6,13 @@
 // window, which holds every physically meaningful input) are solved without a
 // branch: every lane evaluates the operations of all four cases, in the same
 // order and with the same fma as stable.hpp, and selects its own result with
-// masks, so the compiler vectorises the loop. The rare lanes outside that
-// window (extreme magnitudes, NaN, infinity, phi < 0) are found by an OR over a
-// block of lanes and solved by the scalar contact::solve_stable afterwards.
+// masks, so the compiler vectorises the loop. A block (or, with AVX-512, a
+// vector of 8 lanes) with lanes outside that window runs again rescaled: u
+// and dy move by one power of two into the window and s moves back, exactly
+// (the homogeneity that solve_stable uses outside its plain window). The lanes
+// that even that cannot answer (phi outside the window, zero or subnormal u or
+// dy, u and dy too far apart, a subnormal or overflowing s, NaN, infinity,
+// phi < 0) are solved by the scalar contact::solve_stable.
 //
 // The exact criterion of (A.21), u + dy - phi dy >= 0, is what stable.hpp
 // decides with an exact expansion (two_prod, then Shewchuk's sum with zero
@@ -108,14 +112,73 @@ static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
 static_assert(vector_window<double> <= detail::plain_window<double> && vector_window<float> <= detail::plain_window<float>,
               "inside safe_window's half-width");
 
+// Out-of-window lanes: (A.2) is homogeneous in (u, dy), so a lane whose phi
+// lies in the vector window moves u and dy by one power of two, the larger of
+// |u| and |dy| into [2^(E-1), 2^E), and s back at the end, as solve_stable
+// does outside the plain window. The shift is added to the bit patterns (in
+// units of the exponent field), which is exact for normal u and dy landing on
+// normal values; the smaller lands inside the vector window iff their binades
+// span less than 2E, which inside_window tests on the moved values. Zero,
+// subnormal, infinite and NaN u or dy fail both_normal and, like a subnormal
+// or overflowing s, go to the scalar path.
+template <class T>
+inline constexpr bits_t<T> significand_mask = (bits_t<T>(1) << (std::numeric_limits<T>::digits - 1)) - 1;
+
+template <class T>
+inline constexpr bits_t<T> sign_mask = bits_t<T>(1) << (sizeof(T) * 8 - 1);
+
+template <class T>
+inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << (std::numeric_limits<T>::digits - 1);
+
+template <class T>
+inline constexpr bits_t<T> normal_span = std::bit_cast<bits_t<T>>(std::numeric_limits<T>::infinity()) - smallest_normal_bits<T>;
+
+template <class T>
+inline constexpr bits_t<T> window_top_binade =  // bits(2^(E-1))
+    bits_t<T>(std::numeric_limits<T>::max_exponent - 2 + vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> rescaling(bits_t<T> u_bits, bits_t<T> dy_bits) {
+  using U = bits_t<T>;
+  const U abs_u = u_bits & ~sign_mask<T>, abs_dy = dy_bits & ~sign_mask<T>;
+  const U top = abs_u > abs_dy ? abs_u : abs_dy;
+  return U(window_top_binade<T> - (top & ~significand_mask<T>));
+}
+
+// |u| and |dy| normal: bits(|x|) - bits(least normal) < bits(inf) - bits(least normal), unsigned.
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) {
+  using U = bits_t<T>;
+  const U u_offset = U((u_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
+  const U dy_offset = U((dy_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
+  return mask<T>(u_offset < normal_span<T>) & mask<T>(dy_offset < normal_span<T>);
+}
+
+// s moved back by the shift: exact where the result is normal or s is 0;
+// `normal` is all ones there, else zero.
+template <class T>
+CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
+  using U = bits_t<T>;
+  const U s_bits = std::bit_cast<U>(s);
+  const U abs_s = s_bits & ~sign_mask<T>;
+  const U is_zero = mask<T>(abs_s == 0);
+  normal = mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>) | is_zero;
+  return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
+}
+
 // One lane of the branch-free path. Returns all ones if s and which are
 // solve_stable's, and zero if the lane must be redone by the scalar path: it
 // lies outside the vector window, or (A.21)'s exact sum is so close to 0 that
 // the filter below cannot tell its sign.
-template <class T>
-CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
+// With `rescaled`, u and dy first move into the window (and s back).
+template <bool rescaled, class T>
+CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
   using U = bits_t<T>;
-  const U inside = inside_window(std::fabs(u), std::fabs(dy), phi);
+  const U u_bits = std::bit_cast<U>(u_in), dy_bits = std::bit_cast<U>(dy_in);
+  const U shift = rescaled ? rescaling<T>(u_bits, dy_bits) : U(0);
+  const T u = std::bit_cast<T>(U(u_bits + shift)), dy = std::bit_cast<T>(U(dy_bits + shift));
+  U inside = inside_window(std::fabs(u), std::fabs(dy), phi);
+  if constexpr (rescaled) inside &= both_normal<T>(u_bits, dy_bits);
   const U no_contact_before = mask<T>(dy <= 0);
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
@@ -169,11 +232,12 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u, T dy, T phi, T& s_out, std::make_signed
   s = s > upper ? upper : s;
   s = pick(is_free, T(-u), s);  // (A.29): -u, as -u / 1 rounds, with no clamp
 
-  s_out = s;
+  U s_back_normal = ~U(0);
+  s_out = rescaled ? scaled_back(s, shift, s_back_normal) : s;
   // the case number 1 + [impact] + 2 [dy > 0] + [release]; a true mask is -1
   using S = std::make_signed_t<U>;
   which_out = S(1) - S(is_impact) - S(2) * S(contact_before) - S(is_release);
-  return inside & (no_contact_before | decided);
+  return inside & s_back_normal & (no_contact_before | decided);
 }
 
 // The scalar path for lane i, where the vector path cannot answer.
@@ -182,6 +246,25 @@ void solve_scalar_lane(const T* u, const T* dy, const T* phi, T* s, int* which, 
   const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
   s[i] = r.s;
   which[i] = static_cast<int>(r.which);
+}
+
+// A block with lanes outside the window: every lane again, rescaled (the
+// lanes inside give the same s, by homogeneity, as the plain-T rounding there
+// is that of an unbounded exponent range), and the scalar path for the lanes
+// that even the rescaled pass cannot answer.
+template <class T>
+[[gnu::noinline]] void solve_block_rescaled(const T* __restrict u, const T* __restrict dy, const T* __restrict phi,
+                                            T* __restrict s, int* __restrict which, std::ptrdiff_t start,
+                                            std::ptrdiff_t count) {
+  using case_number = std::make_signed_t<bits_t<T>>;
+  case_number cases[block];
+  bits_t<T> solved[block];
+  for (std::ptrdiff_t i = 0; i < count; ++i)
+    solved[i] = lane<true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    which[start + i] = static_cast<int>(cases[i]);
+    if (!solved[i]) solve_scalar_lane(u, dy, phi, s, which, start + i);
+  }
 }
 
 template <class T>
@@ -196,19 +279,35 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
     const std::ptrdiff_t count = start + block < n ? block : n - start;
     bits_t<T> all_solved = ~bits_t<T>(0);
     for (std::ptrdiff_t i = 0; i < count; ++i)
-      all_solved &= lane(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
+      all_solved &= lane<false>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
     for (std::ptrdiff_t i = 0; i < count; ++i) which[start + i] = static_cast<int>(cases[i]);
-    if (all_solved != ~bits_t<T>(0)) {
-      for (std::ptrdiff_t i = start; i < start + count; ++i) {
-        T unused_s;
-        case_number unused_case;
-        if (!lane(u[i], dy[i], phi[i], unused_s, unused_case)) solve_scalar_lane(u, dy, phi, s, which, i);
-      }
-    }
+    if (all_solved != ~bits_t<T>(0)) [[unlikely]] solve_block_rescaled(u, dy, phi, s, which, start, count);
   }
 }
 
 #if defined(__AVX512F__)
+// The lanes i .. i + 7 that solve_lanes_avx512 left unsolved (bits of `solved`
+// clear): lane<true> on all eight (vectorised, the rescaling of out-of-window
+// lanes), then the scalar path for those it cannot answer either.
+[[gnu::noinline]] inline void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
+                                                   const double* __restrict phi, double* __restrict s,
+                                                   int* __restrict which, std::ptrdiff_t i, unsigned solved) {
+  double rescaled_s[8];
+  std::int64_t rescaled_case[8];
+  std::uint64_t rescaled_solved[8];
+  for (int k = 0; k < 8; ++k)
+    rescaled_solved[k] = lane<true>(u[i + k], dy[i + k], phi[i + k], rescaled_s[k], rescaled_case[k]);
+  for (int k = 0; k < 8; ++k) {
+    if ((solved >> k) & 1) continue;
+    if (rescaled_solved[k]) {
+      s[i + k] = rescaled_s[k];
+      which[i + k] = static_cast<int>(rescaled_case[k]);
+    } else {
+      solve_scalar_lane(u, dy, phi, s, which, i + k);
+    }
+  }
+}
+
 // The same lanes with AVX-512 written out, for double: the operations of lane()
 // in the same order, with the masks in mask registers. Measured on Zen 5, in
 // cache, against the vectorised lane() at about 1.0 ns per lane:
@@ -294,10 +393,8 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i),
                         _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case));
     const __mmask8 solved = inside & (no_contact_before | decided);
-    if (solved != 0xFF) [[unlikely]] {  // out of line: the hot loop stays short
-      for (int k = 0; k < 8; ++k)
-        if (!((solved >> k) & 1)) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i + k);
-    }
+    if (solved != 0xFF) [[unlikely]]  // out of line: the hot loop stays short
+      solve_eight_rescaled(u_in, dy_in, phi_in, s_out, which_out, i, solved);
   }
   for (; i < n; ++i) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i);  // the last n mod 8 lanes
 }

@@ -67,6 +67,16 @@ Num release(const Num& u, const Num& dy, const Num& phi) {
 
 namespace detail {
 
+// The sign of the exact sum u + dy - phi dy in plain T, with phi dy as the
+// exact pair of two_prod. Out of line: the few inputs that need it pay for
+// the call, the common path keeps a small stack frame.
+template <class T>
+[[gnu::noinline]] bool exact_sum_nonnegative(T u, T dy, T phi) {
+  const auto product = two_prod(phi, dy);
+  const T terms[4] = {u, dy, -product.high, -product.low};
+  return sign_of_exact_sum(terms) >= 0;
+}
+
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
 // enters as the exact pair of two_prod; the sign is then that of an exact sum.
 //
@@ -81,14 +91,15 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
     const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
     const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + fabs(dy) + fabs(phi * dy));
     if (fabs(estimate) > margin) return estimate > 0;
-    const auto product = two_prod(phi, dy);
-    const T terms[4] = {u, dy, -product.high, -product.low};
+    return exact_sum_nonnegative(u, dy, phi);
+  } else {  // discarded, branches and all, where plain
+    const scaled<T> dy_s(dy);
+    const auto product = exact_product(scaled<T>(phi), dy_s);
+    const std::array<scaled<T>, 4> terms = {scaled<T>(u), dy_s, -product[0], -product[1]};
+    // far from the boundary one term decides, exactly, without sorting the terms
+    if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
     return sign_of_exact_sum(terms) >= 0;
   }
-  const scaled<T> dy_s(dy);
-  const auto product = exact_product(scaled<T>(phi), dy_s);
-  const std::array<scaled<T>, 4> terms = {scaled<T>(u), dy_s, -product[0], -product[1]};
-  return sign_of_exact_sum(terms) >= 0;
 }
 
 // Whether the (A.32) root lies beyond the largest finite T. R increases, so it
@@ -158,13 +169,54 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
   return solve_cases<false>(u, dy, phi);
 }
 
+// (A.2) is homogeneous in (u, dy): s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi),
+// with the same case. With phi > 0 in the plain window, finite u and dy
+// whose binades span less than the window's width move by one exact power of
+// two into the window, the plain path solves them, and s moves back. Inside
+// the window plain T rounds as the unbounded exponent range of scaled<T> does
+// (docs/equations.md, section 6), and scaled<T> commutes with powers of two, so
+// this is solve_cases<false>'s answer wherever 2^-k s is normal or zero (the
+// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever
+// its neighbour 2^-k s is). Where 2^-k s would be subnormal or overflow,
+// solve_cases<false> rounds it once, as before. Zeros, subnormal u or dy and
+// magnitudes up to overflow take this path; phi outside the window, an
+// exponent spread of u and dy of 2E binades or more, and invalid input go on
+// to solve_anywhere.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+[[gnu::noinline]] solution<T> solve_outside_plain_window(T u, T dy, T phi) {
+  using std::isfinite;
+  // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
+  // for s = -u = 0, a zero of the other sign than plain T's fma gives
+  if (!magnitude_inside_plain_window(phi) || std::signbit(phi) || !isfinite(u) || !isfinite(dy))
+    return solve_anywhere(u, dy, phi);
+  if (u == 0 && dy == 0) return solve_cases<true>(u, dy, phi);
+  const int u_binade = u == 0 ? binade_of(dy) : binade_of(u);
+  const int dy_binade = dy == 0 ? u_binade : binade_of(dy);
+  const int top = u_binade > dy_binade ? u_binade : dy_binade;
+  const int bottom = u_binade > dy_binade ? dy_binade : u_binade;
+  constexpr int half_width = int(plain_window<T>);
+  if (top - bottom >= 2 * half_width) return solve_anywhere(u, dy, phi);
+  const int shift = half_width - 1 - top;  // the larger of |u|, |dy| into [2^(E-1), 2^E)
+  const solution<T> inside = solve_cases<true>(scale_by_power_of_two(u, shift), scale_by_power_of_two(dy, shift), phi);
+  if (inside.s == 0) return inside;
+  const int s_binade = binade_of(inside.s) - shift;
+  if (s_binade < std::numeric_limits<T>::min_exponent - 1 || s_binade >= std::numeric_limits<T>::max_exponent)
+    return solve_cases<false>(u, dy, phi);
+  return {scale_by_power_of_two(inside.s, -shift), inside.which};
+}
+
 }  // namespace detail
 
 template <class T>
 solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
   // the common input, tested on its bits: valid, non-zero, inside the plain window
-  if (detail::inside_plain_window(u, dy, phi)) [[likely]] return detail::solve_cases<true>(u, dy, phi);
-  return detail::solve_anywhere(u, dy, phi);
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    if (detail::inside_plain_window(u, dy, phi)) [[likely]] return detail::solve_cases<true>(u, dy, phi);
+    return detail::solve_outside_plain_window(u, dy, phi);
+  } else {
+    return detail::solve_anywhere(u, dy, phi);
+  }
 }
 
 }  // namespace contact

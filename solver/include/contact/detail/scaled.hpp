@@ -9,9 +9,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "float_tools.hpp"
 
@@ -30,6 +34,16 @@ struct scaled {
     using std::frexp;
     using std::isfinite;
     scaled r;
+    if constexpr (is_binary_hardware) {
+      // frexp of a normal m, on its bits: the exponent field set to that of [0.5, 1)
+      const bits b = std::bit_cast<bits>(m);
+      const int field = int((b >> significand_bits) & field_mask);
+      if (field != 0 && field != int(field_mask)) {
+        r.significand = std::bit_cast<T>(bits((b & ~(field_mask << significand_bits)) | (bits(bias - 1) << significand_bits)));
+        r.exponent = e + field - (bias - 1);
+        return r;
+      }
+    }
     if (m == 0 || !isfinite(m)) {
       r.significand = m;
       return r;
@@ -43,6 +57,13 @@ struct scaled {
   // x * 2^shift, clamped so that huge shifts saturate to 0 or infinity.
   static T shifted(const T& x, long shift) {
     using std::ldexp;
+    if constexpr (is_binary_hardware) {
+      // ldexp of a normal x whose result is normal, on its bits
+      const bits b = std::bit_cast<bits>(x);
+      const long field = long((b >> significand_bits) & field_mask);
+      if (field != 0 && field != long(field_mask) && field + shift > 0 && field + shift < long(field_mask))
+        return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
+    }
     constexpr long limit = INT_MAX / 2;
     if (shift > limit) shift = limit;
     if (shift < -limit) shift = -limit;
@@ -93,6 +114,13 @@ struct scaled {
 
  private:
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
+
+  // binary32 and binary64 take frexp and ldexp's common case on their bits
+  static constexpr bool is_binary_hardware = std::is_same_v<T, float> || std::is_same_v<T, double>;
+  using bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+  static constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
+  static constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+  static constexpr bits field_mask = bits(2 * std::numeric_limits<T>::max_exponent - 1);
 };
 
 // a * b as an exact pair high + low, by two_prod of the significands: their
@@ -104,6 +132,21 @@ std::array<scaled<T>, 2> exact_product(const scaled<T>& a, const scaled<T>& b) {
   const auto product = two_prod(a.significand, b.significand);
   const long exponent = a.exponent + b.exponent;
   return {scaled<T>::normalized(product.high, exponent), scaled<T>::normalized(product.low, exponent)};
+}
+
+// The sign of the exact sum when one term outweighs all the others together,
+// else 0. A non-zero scaled x = m 2^e has |x| in [2^(e-1), 2^e), so a term
+// whose exponent lies at least 3 above every other's exceeds their sum
+// (below (N-1) 2^(e-3), which is at most 2^(e-1) for N <= 5).
+template <class T, std::size_t N>
+  requires(N <= 5)
+int sign_of_dominant_term(const std::array<scaled<T>, N>& terms) {
+  std::size_t top = 0;  // the term of largest exponent; terms[0] while all are 0
+  for (std::size_t i = 1; i < N; ++i)
+    if (terms[i].significand != 0 && (terms[top].significand == 0 || terms[i].exponent > terms[top].exponent)) top = i;
+  for (std::size_t i = 0; i < N; ++i)
+    if (i != top && terms[i].significand != 0 && terms[i].exponent > terms[top].exponent - 3) return 0;
+  return terms[top].sign();  // 0 when every term is 0
 }
 
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
@@ -119,10 +162,15 @@ std::array<scaled<T>, 2> exact_product(const scaled<T>& a, const scaled<T>& b) {
 template <class T, std::size_t N>
 int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
   const long gap = long(precision_of<T>()) + 3;
-  std::sort(terms.begin(), terms.end(), [](const scaled<T>& a, const scaled<T>& b) {
+  // insertion sort, zeros last, then by decreasing exponent: the clusters and
+  // the sign do not depend on the order of equal exponents, and for four terms
+  // it beats std::sort's general machinery
+  auto before = [](const scaled<T>& a, const scaled<T>& b) {
     if ((a.significand == 0) != (b.significand == 0)) return b.significand == 0;
     return a.exponent > b.exponent;
-  });
+  };
+  for (std::size_t k = 1; k < N; ++k)
+    for (std::size_t j = k; j > 0 && before(terms[j], terms[j - 1]); --j) std::swap(terms[j], terms[j - 1]);
   std::size_t i = 0;
   while (i < N && terms[i].significand != 0) {
     const long top = terms[i].exponent;

@@ -76,16 +76,46 @@ bool magnitude_inside_plain_window(const T& x) {
   return bits((std::bit_cast<bits>(x) & magnitude) - lowest) <= span;
 }
 
-// The common input: valid, u, dy and phi non-zero and inside the plain window,
-// phi > 0. For binary32 and binary64 a test of bits; other types have no such
-// shortcut and take safe_window's general test.
+// floor(log2 |x|) for a finite non-zero binary32 or binary64 x, subnormals included.
 template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+int binade_of(const T& x) {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
+  constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+  const bits magnitude = std::bit_cast<bits>(x) & ~(bits(1) << (sizeof(bits) * 8 - 1));
+  const int field = int(magnitude >> significand_bits);
+  if (field != 0) return field - bias;
+  return int(sizeof(bits) * 8 - 1) - std::countl_zero(magnitude) - (bias - 1 + significand_bits);
+}
+
+// 2^k for k in T's normal exponent range, from its bits.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+T power_of_two(int k) {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  return std::bit_cast<T>(bits(k + std::numeric_limits<T>::max_exponent - 1) << (std::numeric_limits<T>::digits - 1));
+}
+
+// x 2^k, exact when x and x 2^k are both normal or zero, or x 2^k lies further
+// from the subnormals than x: the two factors have the sign of k, so the
+// intermediate lies between x and x 2^k. Two steps because a shift from the
+// subnormals to the top of the window exceeds T's exponent range.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+T scale_by_power_of_two(const T& x, int k) {
+  const int first = k / 2;
+  return (x * power_of_two<T>(first)) * power_of_two<T>(k - first);
+}
+
+// The common input: valid, u, dy and phi non-zero and inside the plain window,
+// phi > 0, as a test of bits. Other types than binary32 and binary64 have no
+// such shortcut and take safe_window's general test.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 bool inside_plain_window(const T& u, const T& dy, const T& phi) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
-    return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) &&
-           magnitude_inside_plain_window(phi) && !std::signbit(phi);
-  else
-    return false;
+  return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) && magnitude_inside_plain_window(phi) &&
+         !std::signbit(phi);
 }
 
 }  // namespace contact::detail

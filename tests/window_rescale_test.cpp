@@ -1,0 +1,206 @@
+// The rescaled path of solve_stable (u and dy moved into the plain window by a
+// power of two, phi in the window) gives what solve_anywhere gives (for inputs
+// outside safe_window, solve_cases<false>, the scaled<T> path): the same s bit for bit and the same case, on inputs outside the
+// plain window, including results that are subnormal or overflow.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "contact/harness/families.hpp"
+#include "contact/solve.hpp"
+
+namespace {
+
+namespace harness = contact::harness;
+using harness::distribution;
+using shape = distribution::shape;
+
+template <class T>
+using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+
+// What every input outside the bit-pattern window got before the rescaled
+// path: solve_anywhere, plain T inside safe_window (zeros), else scaled<T>.
+template <class T>
+contact::solution<T> old_route(const T& u, const T& dy, const T& phi) {
+  return contact::detail::solve_anywhere(u, dy, phi);
+}
+
+template <class T>
+::testing::AssertionResult same_as_solve_anywhere(const T& u, const T& dy, const T& phi) {
+  const auto fast = contact::solve_stable(u, dy, phi), slow = old_route(u, dy, phi);
+  if (fast.which == slow.which && std::bit_cast<bits<T>>(fast.s) == std::bit_cast<bits<T>>(slow.s))
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi
+                                       << ": stable s=" << fast.s << " case " << int(fast.which)
+                                       << ", solve_anywhere s=" << slow.s << " case " << int(slow.which);
+}
+
+// A finite T with binade in [low, high] (subnormals below T's normal range), either sign.
+template <class T>
+T with_binade(harness::seeded_source& source, long low, long high) {
+  const long lowest = harness::lowest_exponent<T>(), highest = harness::highest_exponent<T>();
+  low = std::max(low, lowest);
+  high = std::min(high, highest);
+  return harness::random_sign(source, harness::log_uniform<T>(source, low, high));
+}
+
+// phi inside the plain window, sometimes 0 (which stays on the scaled path).
+template <class T>
+T plain_phi(harness::seeded_source& source) {
+  const long half = contact::detail::plain_window<T>;
+  return source.integer(0, 20) == 0 ? T(0) : harness::log_uniform<T>(source, -half, half - 1);
+}
+
+template <class T>
+void check_out_of_window(std::uint64_t seed, long count) {
+  harness::seeded_source source(seed);
+  const long half = contact::detail::plain_window<T>;
+  const long lowest = harness::lowest_exponent<T>(), highest = harness::highest_exponent<T>();
+  long failures = 0;
+  for (long i = 0; i < count && failures < 10; ++i) {
+    harness::input<T> x;
+    switch (source.integer(0, 5)) {
+      case 0: x = harness::any_input<T>(source); break;
+      case 1: {  // u and dy within the window's width of each other, anywhere in T's range
+        const long top = source.integer(lowest, highest);
+        const long spread = source.integer(0, 2 * half + 2);
+        const bool u_larger = harness::coin(source);
+        const T larger = with_binade<T>(source, top, top), smaller = with_binade<T>(source, top - spread, top - spread);
+        x = {u_larger ? larger : smaller, u_larger ? smaller : larger, plain_phi<T>(source)};
+        break;
+      }
+      case 2: {  // both case boundaries at any magnitude
+        const T dy = with_binade<T>(source, lowest, highest), phi = plain_phi<T>(source);
+        const long steps = source.integer(-4, 4);
+        x = dy <= 0 ? harness::on_free_impact_boundary(dy, phi, steps) : harness::on_contact_release_boundary(dy, phi, steps);
+        break;
+      }
+      case 3: {  // near the subnormals: results that underflow
+        x = {with_binade<T>(source, lowest, lowest + 2 * half), with_binade<T>(source, lowest, lowest + 2 * half),
+             plain_phi<T>(source)};
+        break;
+      }
+      case 4: {  // near overflow: results beyond the largest finite T
+        x = {with_binade<T>(source, highest - 2 * half, highest), with_binade<T>(source, highest - 8, highest),
+             plain_phi<T>(source)};
+        break;
+      }
+      default: {  // zeros with anything
+        const T values[] = {T(0), T(-0.0), with_binade<T>(source, lowest, highest)};
+        x = {values[source.integer(0, 2)], values[source.integer(0, 2)], plain_phi<T>(source)};
+        break;
+      }
+    }
+    const auto result = same_as_solve_anywhere(x.u, x.dy, x.phi);
+    if (!result) ++failures;
+    EXPECT_TRUE(result);
+  }
+}
+
+TEST(WindowRescale, DoubleMatchesSolveAnywhereBitForBit) { check_out_of_window<double>(20261123, 400000); }
+TEST(WindowRescale, FloatMatchesSolveAnywhereBitForBit) { check_out_of_window<float>(20261124, 400000); }
+
+// One input for each way out of the rescaled path and each way through it.
+TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
+  const double max = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+  const double inputs[][3] = {
+      {0.0, 0.0, 1.0},               // both zero
+      {0.0, -0x1p-600, 1.0},         // u zero: free
+      {0x1p-600, 0.0, 3.0},          // dy zero: impact
+      {0x1p-300, 0x1p-301, 1.0},     // contact with s = 0 exactly
+      {0x1p-1060, -0x1p-1070, 1.0},  // impact with a subnormal s
+      {-max, max / 2, 1.0},          // release with s beyond the largest double
+      {max, -max, 0.5},              // impact near -max
+      {0x1p700, 0x1p-300, 1.0},      // u and dy too far apart for one shift
+      {1e-5, 1e-5, 1e300},           // phi above the window
+      {1e-5, -1e-5, tiny},           // phi subnormal
+      {1e300, 1e300, -0.0},          // phi = -0
+      {0.0, 1e300, 0.0},             // phi = 0: s = -0 from the scaled path's fma
+      {std::nan(""), 1.0, 1.0},      // invalid
+      {1.0, 1.0, -1.0},              // invalid
+      {0x1p-1074, 0x1p-1074, 2.0},   // subnormal u and dy
+  };
+  for (const auto& in : inputs) EXPECT_TRUE(same_as_solve_anywhere(in[0], in[1], in[2]));
+  EXPECT_EQ(contact::solve_stable(-max, max / 2, 1.0).s, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(contact::solve_stable(0x1p-300, 0x1p-301, 1.0).s, 0.0);
+  EXPECT_EQ(contact::solve_stable(0x1p-1060, -0x1p-1070, 1.0).which, contact::contact_case::impact);
+}
+
+// binade_of and scale_by_power_of_two at the edges of T's range.
+TEST(WindowRescale, BinadesAndExactShifts) {
+  using contact::detail::binade_of;
+  using contact::detail::scale_by_power_of_two;
+  EXPECT_EQ(binade_of(std::numeric_limits<double>::denorm_min()), -1074);
+  EXPECT_EQ(binade_of(-std::numeric_limits<double>::min()), -1022);
+  EXPECT_EQ(binade_of(std::numeric_limits<double>::max()), 1023);
+  EXPECT_EQ(binade_of(0x1.8p-1060), -1060);
+  EXPECT_EQ(binade_of(std::numeric_limits<float>::denorm_min()), -149);
+  EXPECT_EQ(binade_of(3.0f), 1);
+  EXPECT_EQ(scale_by_power_of_two(std::numeric_limits<double>::denorm_min(), 1074 + 239), 0x1p239);
+  EXPECT_EQ(scale_by_power_of_two(std::numeric_limits<double>::max(), -1023 - 240), 0x1.fffffffffffffp-240);
+  EXPECT_EQ(scale_by_power_of_two(-0.0, 500), -0.0);
+}
+
+}  // namespace
+
+namespace {
+
+// scaled<T>'s normalisation and shift on bits agree with frexp and ldexp,
+// including the subnormals, zeros, infinities and shifts out of T's range.
+template <class T>
+void check_scaled_bits(std::uint64_t seed) {
+  using S = contact::detail::scaled<T>;
+  harness::seeded_source source(seed);
+  const T specials[] = {T(0), T(-0.0), std::numeric_limits<T>::infinity(), std::numeric_limits<T>::denorm_min(),
+                        std::numeric_limits<T>::min(), std::numeric_limits<T>::max()};
+  const long range = harness::highest_exponent<T>() - harness::lowest_exponent<T>() + 4;
+  for (int i = 0; i < 200000; ++i) {
+    const T x = source.integer(0, 20) == 0 ? specials[source.integer(0, 5)] : harness::any_finite<T>(source);
+    const long e = source.integer(-range, range);
+    int k = 0;
+    const T m = std::frexp(x, &k);
+    const S n = S::normalized(x, e);
+    ASSERT_EQ(std::bit_cast<bits<T>>(n.significand), std::bit_cast<bits<T>>(m)) << x;
+    if (x != 0 && std::isfinite(x)) ASSERT_EQ(n.exponent, e + k) << x;
+    ASSERT_EQ(std::bit_cast<bits<T>>(S::shifted(x, e)), std::bit_cast<bits<T>>(std::ldexp(x, int(e)))) << x << " " << e;
+  }
+}
+
+TEST(WindowRescale, ScaledOnBitsAgreesWithFrexpAndLdexp) {
+  check_scaled_bits<double>(7);
+  check_scaled_bits<float>(8);
+}
+
+}  // namespace
+
+namespace {
+
+// sign_of_dominant_term decides only where one term outweighs the rest, and
+// then agrees with the exact sum.
+TEST(WindowRescale, DominantTermDecidesOnlyWhereItOutweighsTheRest) {
+  using S = contact::detail::scaled<double>;
+  using terms = std::array<S, 4>;
+  using contact::detail::sign_of_dominant_term;
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(0.0), S(0.0), S(0.0)}), 0);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(0.0), S(0.99)}), -1);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(1.0), S(0.99)}), -1);  // exponents 4 and 1
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0.0), S(-8.0), S(2.0), S(0.99)}), 0);   // exponents 4 and 2
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0x1p-900), S(0x1p100), S(-0x1p97), S(0.0)}), 1);
+  EXPECT_EQ(sign_of_dominant_term(terms{S(0x1p-900), S(0x1p100), S(-0x1.fp98), S(0.0)}), 0);
+  harness::seeded_source source(9);
+  for (int i = 0; i < 100000; ++i) {
+    terms t;
+    double plain[4];
+    for (int k = 0; k < 4; ++k) {
+      plain[k] = source.integer(0, 9) == 0 ? 0.0 : harness::random_sign(source, harness::log_uniform<double>(source, -8, 8));
+      t[k] = S(plain[k]);
+    }
+    const int sign = sign_of_dominant_term(t);
+    if (sign != 0) ASSERT_EQ(sign, contact::detail::sign_of_exact_sum(plain));
+  }
+}
+
+}  // namespace
