@@ -237,21 +237,8 @@ TYPED_TEST(RoundedProperty, AgreesWithStableWithinItsBoundAndHalfAnUlp) {
 TYPED_TEST(RoundedProperty, ScalingUAndDyByPowerOfTwoScalesStepExactly) {
   using T = TypeParam;
   check_property<T>("rounded homogeneity", [] {
-    const auto x = *any_input<T>();
-    const int reach = int(std::min<long>(300, harness::highest_exponent<T>() / 4));
-    const int k = *rc::gen::inRange(-reach, reach + 1);
-    using std::fabs;
-    using std::isfinite;
-    using std::ldexp;
-    const T u2 = ldexp(x.u, k), dy2 = ldexp(x.dy, k);
-    RC_PRE(ldexp(u2, -k) == x.u && ldexp(dy2, -k) == x.dy);  // no input lost bits
-    const auto base = solve_rounded(x.u, x.dy, x.phi), scaled = solve_rounded(u2, dy2, x.phi);
-    const T smallest_normal = (std::numeric_limits<T>::min)();
-    auto normal = [&](const T& v) { return v != 0 && isfinite(v) && fabs(v) >= smallest_normal; };
-    RC_PRE(normal(base.s) && normal(ldexp(base.s, k)));
-    RC_LOG() << x << " k=" << k << " s=" << base.s << " s(2^k)=" << scaled.s << "\n";
-    RC_ASSERT(scaled.which == base.which);
-    RC_ASSERT(scaled.s == ldexp(base.s, k));
+    assert_scaling_by_power_of_two_scales_step<T>([](const T& u, const T& dy, const T& phi) { return solve_rounded(u, dy, phi); },
+                                                  false);
   });
 }
 

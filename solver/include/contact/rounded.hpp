@@ -365,18 +365,31 @@ residual<T> contact(const T& s0, const T& u, const T& dy, const T& phi) {
   return {q, error, d.high, fabs(d.low), T(0), 0};
 }
 
+// s0 (s0 + u), the term (A.30) and (A.32) share: s0 + u = sum.high + sum.low
+// exactly (TwoSum), and s0 (s0 + u) = product.high + product.low up to the one
+// rounding of s0 sum.low, which the bounds count as eps |s0 sum.low|.
+template <class T>
+struct own_sum_product {
+  detail::exact_pair<T> sum, product;
+};
+
+template <class T>
+own_sum_product<T> times_own_sum(const T& s0, const T& u) {
+  const auto sum = detail::two_sum(s0, u);
+  const auto high = product(s0, sum.high);
+  return {sum, {high.high, s0 * sum.low + high.low}};
+}
+
 // (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s) = 2 s + u, the larger root, Q' > 0 there.
 template <class T>
 residual<T> release(const T& s0, const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  const auto w = detail::two_sum(s0, u);  // s0 + u, exact
-  const auto a = product(s0, w.high);
-  const T a_low = s0 * w.low + a.low;     // s0 (s0 + u) = a.high + a_low
+  const auto [w, a] = times_own_sum(s0, u);
   const auto b = product(phi, dy);
   const auto c = product(b.high, dy);
   const T c_low = b.low * dy + c.low;     // phi dy^2 = c.high + c_low
-  const T q1 = a.high - c.high, q2 = a_low - c_low, q = q1 + q2;
-  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a_low) + fabs(b.low * dy) + 2 * fabs(c_low) + fabs(q1) +
+  const T q1 = a.high - c.high, q2 = a.low - c_low, q = q1 + q2;
+  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a.low) + fabs(b.low * dy) + 2 * fabs(c_low) + fabs(q1) +
                             fabs(q2) + fabs(q)) + 12 * eta<T>;
   const T slope = w.high + s0;  // 2 s0 + u - w.low
   return {q, error, slope, T(fabs(w.low) + eps<T> * fabs(slope) + eta<T>), T(1), 1};
@@ -387,17 +400,15 @@ residual<T> release(const T& s0, const T& u, const T& dy, const T& phi) {
 template <class T>
 residual<T> impact(const T& s0, const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  const auto w = detail::two_sum(s0, u);  // s0 + u, exact
-  const auto a = product(s0, w.high);
-  const T a_low = s0 * w.low + a.low;     // s0 (s0 + u) = a.high + a_low
+  const auto [w, a] = times_own_sum(s0, u);
   const auto g = detail::two_sum(dy, T(-s0));  // dy - s0, exact
   const auto k = product(g.high, g.high);
   const T k_low = 2 * g.high * g.low + k.low;  // (dy - s0)^2 = k.high + k_low + g.low^2
   const auto m = product(phi, k.high);
   const T m_low = phi * k_low + m.low;         // phi (dy - s0)^2 = m.high + m_low
-  const T q1 = a.high + m.high, q2 = a_low + m_low, q = q1 + q2;
+  const T q1 = a.high + m.high, q2 = a.low + m_low, q = q1 + q2;
   const T k_error = eps<T> * (fabs(2 * g.high * g.low) + 2 * fabs(k_low) + eps<T> * k.high) + 4 * eta<T>;  // + g.low^2
-  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a_low) + fabs(phi * k_low) + 2 * fabs(m_low) + fabs(q1) +
+  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a.low) + fabs(phi * k_low) + 2 * fabs(m_low) + fabs(q1) +
                             fabs(q2) + fabs(q)) + phi * k_error + 12 * eta<T>;
   const T slope1 = s0 + w.high, slope2 = phi * g.high, slope = slope1 - 2 * slope2;
   const T slope_error =
@@ -502,15 +513,13 @@ inline fixed_step impact_step(double u, double dy, double phi) {
   const double denominator = 1 + phi;
   const double s0 = -((u + 2 * push) + root) / (2 * denominator);
   const double inverse = 1 / root;
-  const auto w = detail::two_sum(s0, u);
-  const auto a = product(s0, w.high);
-  const double a_low = s0 * w.low + a.low;
+  const auto a = times_own_sum(s0, u).product;
   const auto g = detail::two_sum(dy, -s0);
   const auto k = product(g.high, g.high);
   const double k_low = 2 * g.high * g.low + k.low;
   const auto m = product(phi, k.high);
   const double m_low = phi * k_low + m.low;
-  const double q = (a.high + m.high) + (a_low + m_low);
+  const double q = (a.high + m.high) + (a.low + m_low);
   return {s0, q * inverse, root >= impact_separation_limit * (denominator * fabs(s0))};
 }
 
@@ -520,13 +529,11 @@ inline fixed_step release_step(double u, double dy, double phi) {
   const double root = std::sqrt(std::fma(u, u, 4 * stiffness_term));
   const double s0 = u > 0 ? 2 * stiffness_term / (u + root) : (root - u) / 2;
   const double inverse = 1 / root;
-  const auto w = detail::two_sum(s0, u);
-  const auto a = product(s0, w.high);
-  const double a_low = s0 * w.low + a.low;
+  const auto a = times_own_sum(s0, u).product;
   const auto b = product(phi, dy);
   const auto c = product(b.high, dy);
   const double c_low = b.low * dy + c.low;
-  const double q = (a.high - c.high) + (a_low - c_low);
+  const double q = (a.high - c.high) + (a.low - c_low);
   return {s0, -q * inverse, true};
 }
 
