@@ -127,8 +127,9 @@ T upper_neighbour_by_frexp(const T& x) {
   using std::ldexp;
   if constexpr (std::numeric_limits<T>::has_denorm == std::denorm_present) {
     if (fabs(x) < 2 * (std::numeric_limits<T>::min)()) return x + std::numeric_limits<T>::denorm_min();
+  } else {
+    if (x == 0) return (std::numeric_limits<T>::min)();
   }
-  if (x == 0) return (std::numeric_limits<T>::min)();
   int exponent = 0;
   const int digits = precision_of<T>();
   const T m = ldexp(frexp(x, &exponent), digits);

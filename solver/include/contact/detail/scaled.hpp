@@ -149,47 +149,66 @@ int sign_of_dominant_term(const std::array<scaled<T>, N>& terms) {
   return terms[top].sign();  // 0 when every term is 0
 }
 
+// Whether T holds, as a normal number, the least significant bit of any
+// cluster of N terms below (shifted so that its largest lies in [0.5, 1)): its
+// neighbours lie at most digits + 3 binades apart, so it reaches down to
+// 2^-((N - 1) (digits + 3) + digits). Every type of the registry has the room
+// for the four terms of the case criterion; float lacks it for eight, and the
+// exhaustive test's formats of few exponents below 1 for four. A decision at
+// compile time, so that no instantiation carries a branch it never takes. MPFR
+// at run-time precision (digits = INT_MAX) has 2^30 binades below 1.
+template <class T, std::size_t N>
+constexpr bool clusters_fit() {
+  using limits = std::numeric_limits<T>;
+  if constexpr (limits::digits == std::numeric_limits<int>::max()) {
+    return true;
+  } else {
+    const long reach = long(N - 1) * (long(limits::digits) + 3) + long(limits::digits);
+    return long(limits::min_exponent) - 1 <= -reach;
+  }
+}
+
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
 // by exponent and cut into clusters wherever two neighbours lie more than
 // digits + 3 binades apart; a non-zero cluster sum is at least the least
 // significant bit of its smallest term, which outweighs everything below the
 // gap, so the first non-zero cluster decides. A cluster is shifted so that its
 // largest term lies in [0.5, 1) and summed in T, exactly, when T holds its
-// least significant bit as a normal number: always, but for a format of few
-// exponents (a cluster of four spans up to 4 digits + 9 binades). Otherwise the
-// whole sum is taken as an expansion of scaled numbers: slower, and exact as
-// well, since scaled<T> sums round as T's would with an unbounded exponent.
+// least significant bit as a normal number (clusters_fit). Otherwise the whole
+// sum is taken as an expansion of scaled numbers: slower, and exact as well,
+// since scaled<T> sums round as T's would with an unbounded exponent.
 template <class T, std::size_t N>
 int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
-  const long gap = long(precision_of<T>()) + 3;
-  // insertion sort, zeros last, then by decreasing exponent: the clusters and
-  // the sign do not depend on the order of equal exponents, and for four terms
-  // it beats std::sort's general machinery
-  auto before = [](const scaled<T>& a, const scaled<T>& b) {
-    if ((a.significand == 0) != (b.significand == 0)) return b.significand == 0;
-    return a.exponent > b.exponent;
-  };
-  for (std::size_t k = 1; k < N; ++k)
-    for (std::size_t j = k; j > 0 && before(terms[j], terms[j - 1]); --j) std::swap(terms[j], terms[j - 1]);
-  std::size_t i = 0;
-  while (i < N && terms[i].significand != 0) {
-    const long top = terms[i].exponent;
-    long previous = top;
-    T cluster[N];
-    std::size_t count = 0;
-    for (; i < N && terms[i].significand != 0 && previous - terms[i].exponent <= gap; ++i) {
-      cluster[count++] = scaled<T>::shifted(terms[i].significand, terms[i].exponent - top);
-      previous = terms[i].exponent;
+  if constexpr (!clusters_fit<T, N>()) {
+    scaled<T> expansion[N];
+    std::copy(terms.begin(), terms.end(), expansion);
+    return sign_of_exact_sum(expansion);
+  } else {
+    const long gap = long(precision_of<T>()) + 3;
+    // insertion sort, zeros last, then by decreasing exponent: the clusters and
+    // the sign do not depend on the order of equal exponents, and for four terms
+    // it beats std::sort's general machinery
+    auto before = [](const scaled<T>& a, const scaled<T>& b) {
+      if ((a.significand == 0) != (b.significand == 0)) return b.significand == 0;
+      return a.exponent > b.exponent;
+    };
+    for (std::size_t k = 1; k < N; ++k)
+      for (std::size_t j = k; j > 0 && before(terms[j], terms[j - 1]); --j) std::swap(terms[j], terms[j - 1]);
+    std::size_t i = 0;
+    while (i < N && terms[i].significand != 0) {
+      const long top = terms[i].exponent;
+      long previous = top;
+      T cluster[N];
+      std::size_t count = 0;
+      for (; i < N && terms[i].significand != 0 && previous - terms[i].exponent <= gap; ++i) {
+        cluster[count++] = scaled<T>::shifted(terms[i].significand, terms[i].exponent - top);
+        previous = terms[i].exponent;
+      }
+      for (std::size_t k = count; k < N; ++k) cluster[k] = 0;
+      if (int sign = sign_of_exact_sum(cluster)) return sign;
     }
-    if (previous - top - long(precision_of<T>()) < long(std::numeric_limits<T>::min_exponent) - 1) {
-      scaled<T> expansion[N];
-      std::copy(terms.begin(), terms.end(), expansion);
-      return sign_of_exact_sum(expansion);
-    }
-    for (std::size_t k = count; k < N; ++k) cluster[k] = 0;
-    if (int sign = sign_of_exact_sum(cluster)) return sign;
+    return 0;
   }
-  return 0;
 }
 
 }  // namespace contact::detail
