@@ -155,18 +155,14 @@ int sign_of_dominant_term(const std::array<scaled<T>, N>& terms) {
 // 2^-((N - 1) (digits + 3) + digits). Every type of the registry has the room
 // for the four terms of the case criterion; float lacks it for eight, and the
 // exhaustive test's formats of few exponents below 1 for four. A decision at
-// compile time, so that no instantiation carries a branch it never takes. MPFR
+// compile time, so that no instantiation carries a branch it never takes (a
+// variable, so that no code of its own is left unrun either). MPFR
 // at run-time precision (digits = INT_MAX) has 2^30 binades below 1.
 template <class T, std::size_t N>
-constexpr bool clusters_fit() {
-  using limits = std::numeric_limits<T>;
-  if constexpr (limits::digits == std::numeric_limits<int>::max()) {
-    return true;
-  } else {
-    const long reach = long(N - 1) * (long(limits::digits) + 3) + long(limits::digits);
-    return long(limits::min_exponent) - 1 <= -reach;
-  }
-}
+inline constexpr bool clusters_fit =
+    std::numeric_limits<T>::digits == std::numeric_limits<int>::max() ||
+    long(std::numeric_limits<T>::min_exponent) - 1 <=
+        -(long(N - 1) * (long(std::numeric_limits<T>::digits) + 3) + long(std::numeric_limits<T>::digits));
 
 // Sign of the exact sum of scaled numbers of any magnitudes. Terms are sorted
 // by exponent and cut into clusters wherever two neighbours lie more than
@@ -179,7 +175,7 @@ constexpr bool clusters_fit() {
 // since scaled<T> sums round as T's would with an unbounded exponent.
 template <class T, std::size_t N>
 int sign_of_exact_sum(std::array<scaled<T>, N> terms) {
-  if constexpr (!clusters_fit<T, N>()) {
+  if constexpr (!clusters_fit<T, N>) {
     scaled<T> expansion[N];
     std::copy(terms.begin(), terms.end(), expansion);
     return sign_of_exact_sum(expansion);
