@@ -57,7 +57,7 @@ template <class T>
 inline constexpr bool has_lane_kernel = std::is_same_v<T, double> || std::is_same_v<T, float>;
 
 template <class T>
-using bits_t = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+using bits_t = typename detail::binary_layout<T>::bits;
 
 // Lanes solved per block; the scalar fix-up of out-of-window lanes happens per block.
 inline constexpr std::ptrdiff_t block = 256;
@@ -94,10 +94,10 @@ inline constexpr int vector_window = std::is_same_v<T, double> ? 128 : 16;
 
 template <class T>
 inline constexpr bits_t<T> window_lowest =  // bits(2^-E)
-    bits_t<T>(std::numeric_limits<T>::max_exponent - 1 - vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+    bits_t<T>(detail::binary_layout<T>::bias - vector_window<T>) << detail::binary_layout<T>::significand_bits;
 
 template <class T>
-inline constexpr bits_t<T> window_width = bits_t<T>(2 * vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+inline constexpr bits_t<T> window_width = bits_t<T>(2 * vector_window<T>) << detail::binary_layout<T>::significand_bits;
 
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> inside_window(T abs_u, T abs_dy, T phi) {
@@ -122,20 +122,20 @@ static_assert(vector_window<double> <= detail::plain_window<double> && vector_wi
 // subnormal, infinite and NaN u or dy fail both_normal and, like a subnormal
 // or overflowing s, go to the scalar path.
 template <class T>
-inline constexpr bits_t<T> significand_mask = (bits_t<T>(1) << (std::numeric_limits<T>::digits - 1)) - 1;
+inline constexpr bits_t<T> significand_mask = (bits_t<T>(1) << detail::binary_layout<T>::significand_bits) - 1;
 
 template <class T>
-inline constexpr bits_t<T> sign_mask = bits_t<T>(1) << (sizeof(T) * 8 - 1);
+inline constexpr bits_t<T> sign_mask = detail::binary_layout<T>::sign;
 
 template <class T>
-inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << (std::numeric_limits<T>::digits - 1);
+inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << detail::binary_layout<T>::significand_bits;
 
 template <class T>
 inline constexpr bits_t<T> normal_span = std::bit_cast<bits_t<T>>(std::numeric_limits<T>::infinity()) - smallest_normal_bits<T>;
 
 template <class T>
 inline constexpr bits_t<T> window_top_binade =  // bits(2^(E-1))
-    bits_t<T>(std::numeric_limits<T>::max_exponent - 2 + vector_window<T>) << (std::numeric_limits<T>::digits - 1);
+    bits_t<T>(detail::binary_layout<T>::bias - 1 + vector_window<T>) << detail::binary_layout<T>::significand_bits;
 
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> rescaling(bits_t<T> u_bits, bits_t<T> dy_bits) {

@@ -276,10 +276,9 @@ template <class T>
 gap_pair<T> half_gaps(const T& x) {
   using std::fabs;
   T power;  // 2^e <= |x| < 2^(e+1)
-  if constexpr (std::is_same_v<T, double>) {
-    power = std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) & 0x7ff0000000000000ull);
-  } else if constexpr (std::is_same_v<T, float>) {
-    power = std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) & 0x7f800000u);
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+    using layout = binary_layout<T>;  // the exponent field alone
+    power = std::bit_cast<T>(std::bit_cast<typename layout::bits>(x) & (layout::exponent_field << layout::significand_bits));
   } else {
     using std::frexp;
     using std::ldexp;
@@ -573,13 +572,8 @@ inline bool round_through_double(const float& u, const float& dy, const float& p
   const float rounded = static_cast<float>(s);
   out.s = rounded;  // the exact decision's candidate if the test below fails
   if (!(std::fabs(rounded) < std::numeric_limits<float>::max())) return false;
-  auto neighbour = [](float x, int direction) {  // the next float from x in the direction
-    if (x == 0) return direction * std::numeric_limits<float>::denorm_min();
-    const auto bits = std::bit_cast<std::uint32_t>(x);
-    return std::bit_cast<float>((x > 0) == (direction > 0) ? bits + 1 : bits - 1);
-  };
-  const double above = (double(rounded) + double(neighbour(rounded, 1))) / 2;
-  const double below = (double(rounded) + double(neighbour(rounded, -1))) / 2;
+  const double above = (double(rounded) + double(detail::ulp_steps(rounded, 1))) / 2;
+  const double below = (double(rounded) + double(detail::ulp_steps(rounded, -1))) / 2;
   return s + bound < above && s - bound > below;
 }
 

@@ -186,13 +186,27 @@ T square_root(const T& x) {
   return root;
 }
 
+// The layout of binary32 and binary64: the unsigned integer of T's width, the
+// sign bit, the significand field's width, the exponent field's all-ones value
+// (unshifted) and the exponent bias. The one place the bit-pattern code of the
+// window, scaled<T>, the batch kernels and the rounded mode reads them from.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+struct binary_layout {
+  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
+  static constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
+  static constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
+  static constexpr bits exponent_field = bits(2 * std::numeric_limits<T>::max_exponent - 1);
+  static constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+};
+
 // binary32 and binary64 values as ordered integers (-0 and +0 both map to 0),
 // so that k representable values apart is k integers apart.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 std::int64_t ordered_key(T x) {
-  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-  constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
+  using bits = typename binary_layout<T>::bits;
+  constexpr bits sign = binary_layout<T>::sign;
   const bits b = std::bit_cast<bits>(x);
   return (b & sign) ? -std::int64_t(b & ~sign) : std::int64_t(b);
 }
@@ -200,8 +214,8 @@ std::int64_t ordered_key(T x) {
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 T from_ordered_key(std::int64_t k) {
-  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-  constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
+  using bits = typename binary_layout<T>::bits;
+  constexpr bits sign = binary_layout<T>::sign;
   return std::bit_cast<T>(k >= 0 ? bits(k) : bits(sign | bits(-k)));
 }
 

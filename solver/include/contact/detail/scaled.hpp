@@ -36,6 +36,10 @@ struct scaled {
     scaled r;
     if constexpr (is_binary_hardware) {
       // frexp of a normal m, on its bits: the exponent field set to that of [0.5, 1)
+      using layout = binary_layout<T>;
+      using bits = typename layout::bits;
+      constexpr int significand_bits = layout::significand_bits, bias = layout::bias;
+      constexpr bits field_mask = layout::exponent_field;
       const bits b = std::bit_cast<bits>(m);
       const int field = int((b >> significand_bits) & field_mask);
       if (field != 0 && field != int(field_mask)) {
@@ -59,6 +63,10 @@ struct scaled {
     using std::ldexp;
     if constexpr (is_binary_hardware) {
       // ldexp of a normal x whose result is normal, on its bits
+      using layout = binary_layout<T>;
+      using bits = typename layout::bits;
+      constexpr int significand_bits = layout::significand_bits;
+      constexpr bits field_mask = layout::exponent_field;
       const bits b = std::bit_cast<bits>(x);
       const long field = long((b >> significand_bits) & field_mask);
       if (field != 0 && field != long(field_mask) && field + shift > 0 && field + shift < long(field_mask))
@@ -117,10 +125,6 @@ struct scaled {
 
   // binary32 and binary64 take frexp and ldexp's common case on their bits
   static constexpr bool is_binary_hardware = std::is_same_v<T, float> || std::is_same_v<T, double>;
-  using bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
-  static constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
-  static constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
-  static constexpr bits field_mask = bits(2 * std::numeric_limits<T>::max_exponent - 1);
 };
 
 // a * b as an exact pair high + low, by two_prod of the significands: their

@@ -64,8 +64,8 @@ static_assert(plain_window<double> == 240 && plain_window<float> == 24);
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 bool magnitude_inside_plain_window(const T& x) {
-  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-  constexpr bits magnitude = ~(bits(1) << (sizeof(bits) * 8 - 1));
+  using bits = typename binary_layout<T>::bits;
+  constexpr bits magnitude = ~binary_layout<T>::sign;
   constexpr T highest = [] {
     T power = 1;
     for (long k = 0; k < plain_window<T>; ++k) power *= 2;
@@ -80,10 +80,10 @@ bool magnitude_inside_plain_window(const T& x) {
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 int binade_of(const T& x) {
-  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-  constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
-  constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
-  const bits magnitude = std::bit_cast<bits>(x) & ~(bits(1) << (sizeof(bits) * 8 - 1));
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  constexpr int significand_bits = layout::significand_bits, bias = layout::bias;
+  const bits magnitude = std::bit_cast<bits>(x) & ~layout::sign;
   const int field = int(magnitude >> significand_bits);
   if (field != 0) return field - bias;
   return int(sizeof(bits) * 8 - 1) - std::countl_zero(magnitude) - (bias - 1 + significand_bits);
@@ -93,8 +93,8 @@ int binade_of(const T& x) {
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 T power_of_two(int k) {
-  using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
-  return std::bit_cast<T>(bits(k + std::numeric_limits<T>::max_exponent - 1) << (std::numeric_limits<T>::digits - 1));
+  using layout = binary_layout<T>;
+  return std::bit_cast<T>(typename layout::bits(k + layout::bias) << layout::significand_bits);
 }
 
 // x 2^k, exact when x and x 2^k are both normal or zero, or x 2^k lies further
