@@ -17,11 +17,7 @@ using contact::reference::real;
 
 inline constexpr mpfr_prec_t bits = 2400;  // holds any double or float and its ulp exactly, with room
 
-// The sign of R(s) of (A.2), exactly; at s = 0 the sign of its limit u - 2 phi floor(dy).
-inline int residual_sign(const rational& s, const rational& u, const rational& dy, const rational& phi) {
-  if (s.sign() == 0) return (u - (dy.sign() > 0 ? phi * dy + phi * dy : rational())).sign();
-  return contact::reference::detail_ref::residual_sign(s, u, dy, phi);
-}
+using contact::reference::detail_ref::residual_sign;  // exact, at s = 0 too
 
 // Whether the exact root lies within `ulps` ulps of s, the ulp of T taken at
 // the far end of the interval (so the test agrees with an error in ulps of the

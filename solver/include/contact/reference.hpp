@@ -109,9 +109,12 @@ namespace detail_ref {
 
 inline rational floor_squared(const rational& x) { return x.sign() > 0 ? x * x : rational(); }
 
-// sign of R(s) = s + u + phi (floor(dy - s)^2 - floor(dy)^2) / s, exactly, for s != 0
-// (as the sign of s R(s), a polynomial, times the sign of s).
+// sign of R(s) = s + u + phi (floor(dy - s)^2 - floor(dy)^2) / s, exactly
+// (as the sign of s R(s), a polynomial, times the sign of s); at s = 0 the sign
+// of R's limit there, u - 2 phi floor(dy), the continuous extension (A.2) is
+// read with.
 inline int residual_sign(const rational& s, const rational& u, const rational& dy, const rational& phi) {
+  if (s.sign() == 0) return (u - (dy.sign() > 0 ? phi * dy + phi * dy : rational())).sign();
   rational times_s = s * s + u * s + phi * (floor_squared(dy - s) - floor_squared(dy));
   return times_s.sign() * s.sign();
 }
@@ -128,8 +131,7 @@ inline bool certify(const real& s, real& lower, real& upper, const rational& u, 
   if (mpfr_zero_p(s.get())) {
     mpfr_set_zero(lower.get(), 1);
     mpfr_set_zero(upper.get(), 1);
-    const rational limit = u - (dy.sign() > 0 ? phi * dy + phi * dy : rational());
-    return limit.sign() == 0;
+    return detail_ref::residual_sign(rational(), u, dy, phi) == 0;
   }
   real delta(mpfr_get_prec(s.get()));
   mpfr_abs(delta.get(), s.get(), MPFR_RNDN);
