@@ -172,16 +172,26 @@ class checker {
     return r;
   }
 
+  // The probes of the trials as one batch for the candidate: trial k's are
+  // inputs[first[k]] up to inputs[first[k + 1]].
+  struct probe_batch {
+    std::vector<input<T>> inputs;
+    std::vector<std::size_t> first;
+  };
+  static probe_batch probes_of(const property<T>& p, const std::vector<trial<T>>& trials) {
+    probe_batch batch;
+    for (const auto& t : trials) {
+      batch.first.push_back(batch.inputs.size());
+      for (const auto& x : p.probes(t)) batch.inputs.push_back(x);
+    }
+    batch.first.push_back(batch.inputs.size());
+    return batch;
+  }
+
   // Judges a batch of trials of p; the first failure is shrunk and kept.
   void judge(const property<T>& p, const std::vector<trial<T>>& trials) {
     record& r = record_of(p);
-    std::vector<input<T>> inputs;
-    std::vector<std::size_t> first;
-    for (const auto& t : trials) {
-      first.push_back(inputs.size());
-      for (const auto& x : p.probes(t)) inputs.push_back(x);
-    }
-    first.push_back(inputs.size());
+    const auto [inputs, first] = probes_of(p, trials);
     const auto outcomes = candidate_.solve(as_double(inputs));
     for (std::size_t t = 0; t < trials.size(); ++t) {
       std::vector<probe_result<T>> results;
@@ -225,13 +235,7 @@ class checker {
     const auto start = std::chrono::steady_clock::now();
     for (int round = 0; round < 200 && seconds_since(start) < shrink_seconds(); ++round) {
       const auto neighbours = simpler_trials(t);
-      std::vector<input<T>> inputs;
-      std::vector<std::size_t> first;
-      for (const auto& n : neighbours) {
-        first.push_back(inputs.size());
-        for (const auto& x : p.probes(n)) inputs.push_back(x);
-      }
-      first.push_back(inputs.size());
+      const auto [inputs, first] = probes_of(p, neighbours);
       const auto outcomes = candidate_.solve(as_double(inputs));
       bool simpler = false;
       for (std::size_t k = 0; k < neighbours.size() && !simpler; ++k) {
