@@ -47,11 +47,23 @@ T with_binade(harness::seeded_source& source, long low, long high) {
   return harness::random_sign(source, harness::log_uniform<T>(source, low, high));
 }
 
-// phi inside the plain window, sometimes 0 (which stays on the scaled path).
+// phi inside the plain window, anywhere in T's range (subnormal, huge, in
+// every band), at the edges of a band, or 0 (which stays on the scaled path).
 template <class T>
-T plain_phi(harness::seeded_source& source) {
+T any_phi(harness::seeded_source& source) {
+  using bands = contact::detail::phi_bands<T>;
   const long half = contact::detail::plain_window<T>;
-  return source.integer(0, 20) == 0 ? T(0) : harness::log_uniform<T>(source, -half, half - 1);
+  switch (source.integer(0, 20)) {
+    case 0: return T(0);
+    case 1: case 2: case 3: case 4: case 5:
+      return harness::log_uniform<T>(source, harness::lowest_exponent<T>(), harness::highest_exponent<T>());
+    case 6: case 7: {  // the least or the greatest binade of a band
+      const long band = source.integer(0, bands::count - 1);
+      const long binade = bands::least_binade + (band << bands::band_bits) + (harness::coin(source) ? 0 : (1 << bands::band_bits) - 1);
+      return harness::log_uniform<T>(source, binade, binade);
+    }
+    default: return harness::log_uniform<T>(source, -half, half - 1);
+  }
 }
 
 template <class T>
@@ -64,33 +76,33 @@ void check_out_of_window(std::uint64_t seed, long count) {
     harness::input<T> x;
     switch (source.integer(0, 5)) {
       case 0: x = harness::any_input<T>(source); break;
-      case 1: {  // u and dy within the window's width of each other, anywhere in T's range
+      case 1: {  // u and dy within a band's room of each other, anywhere in T's range
         const long top = source.integer(lowest, highest);
-        const long spread = source.integer(0, 2 * half + 2);
+        const long spread = source.integer(0, harness::coin(source) ? 2 * half + 2 : 4 * half + 8);
         const bool u_larger = harness::coin(source);
         const T larger = with_binade<T>(source, top, top), smaller = with_binade<T>(source, top - spread, top - spread);
-        x = {u_larger ? larger : smaller, u_larger ? smaller : larger, plain_phi<T>(source)};
+        x = {u_larger ? larger : smaller, u_larger ? smaller : larger, any_phi<T>(source)};
         break;
       }
       case 2: {  // both case boundaries at any magnitude
-        const T dy = with_binade<T>(source, lowest, highest), phi = plain_phi<T>(source);
+        const T dy = with_binade<T>(source, lowest, highest), phi = any_phi<T>(source);
         const long steps = source.integer(-4, 4);
         x = dy <= 0 ? harness::on_free_impact_boundary(dy, phi, steps) : harness::on_contact_release_boundary(dy, phi, steps);
         break;
       }
       case 3: {  // near the subnormals: results that underflow
         x = {with_binade<T>(source, lowest, lowest + 2 * half), with_binade<T>(source, lowest, lowest + 2 * half),
-             plain_phi<T>(source)};
+             any_phi<T>(source)};
         break;
       }
       case 4: {  // near overflow: results beyond the largest finite T
         x = {with_binade<T>(source, highest - 2 * half, highest), with_binade<T>(source, highest - 8, highest),
-             plain_phi<T>(source)};
+             any_phi<T>(source)};
         break;
       }
       default: {  // zeros with anything
         const T values[] = {T(0), T(-0.0), with_binade<T>(source, lowest, highest)};
-        x = {values[source.integer(0, 2)], values[source.integer(0, 2)], plain_phi<T>(source)};
+        x = {values[source.integer(0, 2)], values[source.integer(0, 2)], any_phi<T>(source)};
         break;
       }
     }
@@ -116,6 +128,9 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
       {max, -max, 0.5},              // impact near -max
       {0x1p700, 0x1p-300, 1.0},      // u and dy too far apart for one shift
       {1e-5, 1e-5, 1e300},           // phi above the window
+      {1e-5, -1e-5, 0x1p1023},       // phi in no band: 2 (1 + phi) overflows
+      {1e-5, 1e-5, 0x1p973},         // phi in the last band that has room
+      {0x1p-1074, 0x1p1023, 0x1p-1074},  // u and dy too far apart for phi's band
       {1e-5, -1e-5, tiny},           // phi subnormal
       {1e300, 1e300, -0.0},          // phi = -0
       {0.0, 1e300, 0.0},             // phi = 0: s = -0 from the scaled path's fma

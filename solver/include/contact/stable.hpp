@@ -170,38 +170,39 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
 }
 
 // (A.2) is homogeneous in (u, dy): s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi),
-// with the same case. With phi > 0 in the plain window, finite u and dy
-// whose binades span less than the window's width move by one exact power of
-// two into the window, the plain path solves them, and s moves back. Inside
-// the window plain T rounds as the unbounded exponent range of scaled<T> does
-// (docs/equations.md, section 6), and scaled<T> commutes with powers of two, so
-// this is solve_cases<false>'s answer wherever 2^-k s is normal or zero (the
-// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever
-// its neighbour 2^-k s is). Where 2^-k s would be subnormal or overflow,
-// solve_cases<false> rounds it once, as before. Zeros, subnormal u or dy and
-// magnitudes up to overflow take this path; phi outside the window, an
-// exponent spread of u and dy of 2E binades or more, and invalid input go on
-// to solve_anywhere.
+// with the same case. With phi > 0 finite, finite u and dy move by one exact
+// power of two to where phi's band (phi_bands) leaves room for them, the plain
+// path solves them, and s moves back. There plain T rounds as the unbounded
+// exponent range of scaled<T> does (docs/equations.md, section 6), and
+// scaled<T> commutes with powers of two, so this is solve_cases<false>'s
+// answer wherever s is normal or zero both before and after it moves back (the
+// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever its
+// neighbour s is). Where either s would be subnormal or 2^-k s overflow,
+// solve_cases<false> rounds it once, as before. u and dy too far apart for the
+// band, phi = 0, phi beyond the last band and invalid input go on to
+// solve_anywhere.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 [[gnu::noinline]] solution<T> solve_outside_plain_window(T u, T dy, T phi) {
   using std::isfinite;
   // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
   // for s = -u = 0, a zero of the other sign than plain T's fma gives
-  if (!magnitude_inside_plain_window(phi) || std::signbit(phi) || !isfinite(u) || !isfinite(dy))
-    return solve_anywhere(u, dy, phi);
+  if (!(phi > 0) || !isfinite(phi) || !isfinite(u) || !isfinite(dy)) return solve_anywhere(u, dy, phi);
   if (u == 0 && dy == 0) return solve_cases<true>(u, dy, phi);
   const int u_binade = u == 0 ? binade_of(dy) : binade_of(u);
   const int dy_binade = dy == 0 ? u_binade : binade_of(dy);
-  const int top = u_binade > dy_binade ? u_binade : dy_binade;
-  const int bottom = u_binade > dy_binade ? dy_binade : u_binade;
-  constexpr int half_width = int(plain_window<T>);
-  if (top - bottom >= 2 * half_width) return solve_anywhere(u, dy, phi);
-  const int shift = half_width - 1 - top;  // the larger of |u|, |dy| into [2^(E-1), 2^E)
+  const int larger = u_binade > dy_binade ? u_binade : dy_binade;
+  const int smaller = u_binade > dy_binade ? dy_binade : u_binade;
+  const auto band = phi_bands<T>::of_phi(phi);
+  const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
+  if (smaller + shift < band.lowest) return solve_anywhere(u, dy, phi);
   const solution<T> inside = solve_cases<true>(scale_by_power_of_two(u, shift), scale_by_power_of_two(dy, shift), phi);
   if (inside.s == 0) return inside;
-  const int s_binade = binade_of(inside.s) - shift;
-  if (s_binade < std::numeric_limits<T>::min_exponent - 1 || s_binade >= std::numeric_limits<T>::max_exponent)
+  if (!isfinite(inside.s)) return solve_cases<false>(u, dy, phi);  // not within the bands' bounds: never taken
+  constexpr int least_normal_binade = std::numeric_limits<T>::min_exponent - 1;
+  const int inside_binade = binade_of(inside.s), s_binade = inside_binade - shift;
+  if (inside_binade < least_normal_binade || s_binade < least_normal_binade ||
+      s_binade >= std::numeric_limits<T>::max_exponent)
     return solve_cases<false>(u, dy, phi);
   return {scale_by_power_of_two(inside.s, -shift), inside.which};
 }

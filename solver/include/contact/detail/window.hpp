@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -107,6 +108,61 @@ T scale_by_power_of_two(const T& x, int k) {
   const int first = k / 2;
   return (x * power_of_two<T>(first)) * power_of_two<T>(k - first);
 }
+
+// The phi bands: outside the plain window, (A.2)'s homogeneity in (u, dy)
+// lets u and dy move by a power of two to wherever phi leaves room for them.
+// phi's binades are cut into bands of 2^band_bits; for each band, `top` is
+// where the larger of |u|, |dy| is moved (into [2^(top-1), 2^top)) and
+// `lowest` the least binade a non-zero u or dy may then have. With them no
+// intermediate of the stable formulas, of the fma pre-test and of two_prod
+// over- or underflows (docs/equations.md, section 6, lists each bound;
+// proofs/gappa/window/ proves them per band). A band leaves u and dy 406 to
+// 930 binades of spread in double, 16 to 105 in float (the plain window: 480
+// and 48 with phi inside it); phi from 2^974 (double) or 2^123 (float) up is
+// in no band, as 2 (1 + phi) would overflow.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+struct phi_bands {
+  struct band {
+    int top, lowest;
+  };
+  static constexpr int digits = std::numeric_limits<T>::digits;
+  static constexpr int least_normal_binade = std::numeric_limits<T>::min_exponent - 1;  // -1022
+  static constexpr int overflow_binade = std::numeric_limits<T>::max_exponent;         // 2^1024 overflows
+  static constexpr int least_binade = least_normal_binade - (digits - 1);               // -1074, the least subnormal
+  static constexpr int band_bits = std::is_same_v<T, double> ? 7 : 4;
+  static constexpr int count = ((overflow_binade - 1 - least_binade) >> band_bits) + 1;
+
+  static constexpr int ceil_half(int x) { return x >= 0 ? (x + 1) / 2 : -(-x / 2); }
+  static constexpr int floor_half(int x) { return x >= 0 ? x / 2 : -((-x + 1) / 2); }
+
+  // phi in [2^P, 2^(Q+1)), |u|, |dy| < 2^top; the bounds of docs/equations.md, section 6.
+  static constexpr band of(int P, int Q) {
+    const int p = digits, emin = least_normal_binade;
+    // 2 (1 + phi) must stay finite whatever u and dy are: the band holds nothing
+    if (Q + 3 >= overflow_binade) return {0, overflow_binade};
+    // the largest intermediates, below 2^(2 top + max(Q + 3, 0) + 1): the discriminants
+    const int top = floor_half(overflow_binade - 1 - std::max(Q + 3, 0));
+    // a non-zero phi is a multiple of 2^(Pe - p + 1), a non-zero u or dy of 2^(b - p + 1)
+    const int Pe = std::max(P, emin);
+    const int lowest = std::max({ceil_half(emin - P + p - 1),  // push (u - gap) >= 2^(P + 2b - p + 1)
+                                 emin - Pe + 2 * p - 2,        // two_prod's low part, the fmas' exact values
+                                 ceil_half(emin),              // u^2, the discriminants
+                                 emin - P,                     // phi dy
+                                 emin + p - 1});               // u - gap, u + dy, the margin
+    return {top, lowest};
+  }
+  static constexpr std::array<band, count> table = [] {
+    std::array<band, count> bands{};
+    for (int j = 0; j < count; ++j) {
+      const int P = least_binade + (j << band_bits);
+      bands[j] = of(P, std::min(P + (1 << band_bits) - 1, overflow_binade - 1));
+    }
+    return bands;
+  }();
+  // the band of a finite phi > 0, subnormals included
+  static band of_phi(const T& phi) { return table[(binade_of(phi) - least_binade) >> band_bits]; }
+};
 
 // The common input: valid, u, dy and phi non-zero and inside the plain window,
 // phi > 0, as a test of bits. Other types than binary32 and binary64 have no
