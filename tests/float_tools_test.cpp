@@ -25,6 +25,27 @@ TEST(Neighbours, StepOneUlpAndSaturateAtTheEndsOfTheRangeInFloat) { expect_neigh
 
 TEST(Neighbours, StepOneUlpAndSaturateAtTheEndsOfTheRangeInDouble) { expect_neighbours_saturate<double>(); }
 
+// float and double step their bit patterns; Boost's float_next and float_prior
+// are the specification, on zeros, subnormals, binade edges and random values.
+template <class T>
+void expect_neighbours_as_boost(std::uint64_t seed) {
+  const T big = (std::numeric_limits<T>::max)(), tiny = std::numeric_limits<T>::denorm_min();
+  const T edges[] = {T(0), T(-0.0), tiny, -tiny, (std::numeric_limits<T>::min)(), T(-(std::numeric_limits<T>::min)()),
+                     T(1), T(-1), T(0.5), big, -big, -std::numeric_limits<T>::infinity()};
+  auto expect_as_boost = [&](T x) {
+    if (x < big) EXPECT_EQ(detail::next_up(x), boost::math::float_next(x)) << x;
+    if (x > -big) EXPECT_EQ(detail::next_down(x), boost::math::float_prior(x)) << x;
+  };
+  for (T x : edges) expect_as_boost(x);
+  harness::seeded_source source(seed);
+  for (int i = 0; i < 100000; ++i) expect_as_boost(harness::any_finite<T>(source));
+}
+
+TEST(Neighbours, StepAsBoostDoesInDoubleAndFloat) {
+  expect_neighbours_as_boost<double>(3);
+  expect_neighbours_as_boost<float>(4);
+}
+
 // ulp_steps moves by k representable values, through zero, and stops at the
 // largest finite value: a finite input stays finite.
 template <class T>

@@ -200,9 +200,13 @@ template <class T>
   if (inside.s == 0) return inside;
   if (!isfinite(inside.s)) return solve_cases<false>(u, dy, phi);  // not within the bands' bounds: never taken
   constexpr int least_normal_binade = std::numeric_limits<T>::min_exponent - 1;
+  constexpr int overflow_binade = std::numeric_limits<T>::max_exponent;
   const int inside_binade = binade_of(inside.s), s_binade = inside_binade - shift;
-  if (inside_binade < least_normal_binade || s_binade < least_normal_binade ||
-      s_binade >= std::numeric_limits<T>::max_exponent)
+  // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
+  // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its
+  // root, a few ulps from s, lies beyond the largest T: it keeps the infinity.
+  if (s_binade > overflow_binade) return {std::numeric_limits<T>::infinity(), inside.which};
+  if (inside_binade < least_normal_binade || s_binade < least_normal_binade || s_binade >= overflow_binade)
     return solve_cases<false>(u, dy, phi);
   return {scale_by_power_of_two(inside.s, -shift), inside.which};
 }

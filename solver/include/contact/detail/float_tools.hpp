@@ -137,18 +137,29 @@ T upper_neighbour_by_frexp(const T& x) {
   return ldexp(m + T(1), exponent - digits);
 }
 
-// The neighbours of x; they saturate at +-infinity instead of raising.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+std::int64_t ordered_key(T x);
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+T from_ordered_key(std::int64_t k);
+
+// The neighbours of a finite x; they saturate at +-infinity instead of
+// raising. binary32 and binary64 step their ordered bit patterns (the clamps
+// of the stable path run them on every boundary input).
 template <class T>
 T next_up(const T& x) {
   if (x >= (std::numeric_limits<T>::max)()) return std::numeric_limits<T>::infinity();
-  if constexpr (std::is_convertible_v<float, T>) return boost::math::float_next(x);
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return from_ordered_key<T>(ordered_key(x) + 1);
+  else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_next(x);
   else return upper_neighbour_by_frexp(x);
 }
 
 template <class T>
 T next_down(const T& x) {
   if (x <= -(std::numeric_limits<T>::max)()) return -std::numeric_limits<T>::infinity();
-  if constexpr (std::is_convertible_v<float, T>) return boost::math::float_prior(x);
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return from_ordered_key<T>(ordered_key(x) - 1);
+  else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_prior(x);
   else return -upper_neighbour_by_frexp(T(-x));
 }
 
