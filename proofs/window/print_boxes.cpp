@@ -1,0 +1,34 @@
+// Prints the boxes proofs/gappa_window proves, from the solver's own constants
+// (window.hpp), so that the proofs follow the table rather than a copy of it.
+// One line per box:
+//   TYPE NAME P Q TOP LOWEST PHI_MAY_BE_ZERO
+// phi in [2^P, 2^(Q+1)] (or 0 where the last field is 1); |u|, |dy| are 0 or in
+// [2^LOWEST, 2^TOP]. A band with LOWEST > TOP admits no input and is printed
+// all the same, so that the runner can say it skipped it.
+#include <cstdio>
+
+#include "contact/detail/window.hpp"
+
+namespace {
+
+template <class T>
+void print(const char* type) {
+  using bands = contact::detail::phi_bands<T>;
+  // the plain window: phi, u and dy each 0 or in [2^-E, 2^E] (safe_window; phi = 0 included)
+  const long E = contact::detail::plain_window<T>;
+  std::printf("%s plain %ld %ld %ld %ld 1\n", type, -E, E - 1, E, -E);
+  for (int j = 0; j < bands::count; ++j) {
+    const int P = bands::least_binade + (j << bands::band_bits);
+    const int Q = P + (1 << bands::band_bits) - 1 < bands::overflow_binade - 1 ? P + (1 << bands::band_bits) - 1
+                                                                                : bands::overflow_binade - 1;
+    const auto band = bands::table[j];
+    std::printf("%s band%d %d %d %d %d 0\n", type, j, P, Q, band.top, band.lowest);
+  }
+}
+
+}  // namespace
+
+int main() {
+  print<double>("double");
+  print<float>("float");
+}
