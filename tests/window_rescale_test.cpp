@@ -144,10 +144,10 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
   EXPECT_EQ(contact::solve_stable(0x1p-1060, -0x1p-1070, 1.0).which, contact::contact_case::impact);
 }
 
-// binade_of and scale_by_power_of_two at the edges of T's range.
+// binade_of and scaled<T>::shifted (the rescaled path's moves) at the edges of T's range.
 TEST(WindowRescale, BinadesAndExactShifts) {
   using contact::detail::binade_of;
-  using contact::detail::scale_by_power_of_two;
+  const auto scale_by_power_of_two = [](double x, long k) { return contact::detail::scaled<double>::shifted(x, k); };
   EXPECT_EQ(binade_of(std::numeric_limits<double>::denorm_min()), -1074);
   EXPECT_EQ(binade_of(-std::numeric_limits<double>::min()), -1022);
   EXPECT_EQ(binade_of(std::numeric_limits<double>::max()), 1023);

@@ -184,31 +184,44 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 [[gnu::noinline]] solution<T> solve_outside_plain_window(T u, T dy, T phi) {
-  using std::isfinite;
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  constexpr bits least_normal = bits(1) << layout::significand_bits;
+  constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
+  auto is_normal = [](bits magnitude) { return bits(magnitude - least_normal) < bits(infinite - least_normal); };
   // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
   // for s = -u = 0, a zero of the other sign than plain T's fma gives
-  if (!(phi > 0) || !isfinite(phi) || !isfinite(u) || !isfinite(dy)) return solve_anywhere(u, dy, phi);
-  if (u == 0 && dy == 0) return solve_cases<true>(u, dy, phi);
-  const int u_binade = u == 0 ? binade_of(dy) : binade_of(u);
-  const int dy_binade = dy == 0 ? u_binade : binade_of(dy);
-  const int larger = u_binade > dy_binade ? u_binade : dy_binade;
-  const int smaller = u_binade > dy_binade ? dy_binade : u_binade;
+  if (!(phi > 0) || !(phi < std::numeric_limits<T>::infinity())) return solve_anywhere(u, dy, phi);
+  const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
+  int larger, smaller;  // binades of the larger and the smaller non-zero one of |u|, |dy|
+  if (is_normal(u_magnitude) && is_normal(dy_magnitude)) [[likely]] {
+    larger = int((u_magnitude > dy_magnitude ? u_magnitude : dy_magnitude) >> layout::significand_bits) - layout::bias;
+    smaller = int((u_magnitude > dy_magnitude ? dy_magnitude : u_magnitude) >> layout::significand_bits) - layout::bias;
+  } else {  // zeros and subnormals; infinities and NaN go on
+    if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
+    if (u_magnitude == 0 && dy_magnitude == 0) return solve_cases<true>(u, dy, phi);
+    const int u_binade = u_magnitude == 0 ? binade_of(dy) : binade_of(u);
+    const int dy_binade = dy_magnitude == 0 ? u_binade : binade_of(dy);
+    larger = u_binade > dy_binade ? u_binade : dy_binade;
+    smaller = u_binade > dy_binade ? dy_binade : u_binade;
+  }
   const auto band = phi_bands<T>::of_phi(phi);
   const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
   if (smaller + shift < band.lowest) return solve_anywhere(u, dy, phi);
-  const solution<T> inside = solve_cases<true>(scale_by_power_of_two(u, shift), scale_by_power_of_two(dy, shift), phi);
-  if (inside.s == 0) return inside;
-  if (!isfinite(inside.s)) return solve_cases<false>(u, dy, phi);  // not within the bands' bounds: never taken
-  constexpr int least_normal_binade = std::numeric_limits<T>::min_exponent - 1;
-  constexpr int overflow_binade = std::numeric_limits<T>::max_exponent;
-  const int inside_binade = binade_of(inside.s), s_binade = inside_binade - shift;
+  const solution<T> inside = solve_cases<true>(scaled<T>::shifted(u, shift), scaled<T>::shifted(dy, shift), phi);
+  const bits s_magnitude = std::bit_cast<bits>(inside.s) & ~layout::sign;
+  if (s_magnitude == 0) return inside;
+  // s normal both before and after the move: the exponent field moves, exactly
+  // (a move beyond either end wraps or reaches the sign bit, which is_normal refuses)
+  const bits offset = bits(shift) << layout::significand_bits;
+  if (is_normal(s_magnitude) && is_normal(bits(s_magnitude - offset))) [[likely]]
+    return {std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), inside.which};
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
   // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its
   // root, a few ulps from s, lies beyond the largest T: it keeps the infinity.
-  if (s_binade > overflow_binade) return {std::numeric_limits<T>::infinity(), inside.which};
-  if (inside_binade < least_normal_binade || s_binade < least_normal_binade || s_binade >= overflow_binade)
-    return solve_cases<false>(u, dy, phi);
-  return {scale_by_power_of_two(inside.s, -shift), inside.which};
+  if (is_normal(s_magnitude) && binade_of(inside.s) - shift > std::numeric_limits<T>::max_exponent)
+    return {std::numeric_limits<T>::infinity(), inside.which};
+  return solve_cases<false>(u, dy, phi);
 }
 
 }  // namespace detail

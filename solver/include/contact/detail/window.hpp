@@ -90,25 +90,6 @@ int binade_of(const T& x) {
   return int(sizeof(bits) * 8 - 1) - std::countl_zero(magnitude) - (bias - 1 + significand_bits);
 }
 
-// 2^k for k in T's normal exponent range, from its bits.
-template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
-T power_of_two(int k) {
-  using layout = binary_layout<T>;
-  return std::bit_cast<T>(typename layout::bits(k + layout::bias) << layout::significand_bits);
-}
-
-// x 2^k, exact when x and x 2^k are both normal or zero, or x 2^k lies further
-// from the subnormals than x: the two factors have the sign of k, so the
-// intermediate lies between x and x 2^k. Two steps because a shift from the
-// subnormals to the top of the window exceeds T's exponent range.
-template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
-T scale_by_power_of_two(const T& x, int k) {
-  const int first = k / 2;
-  return (x * power_of_two<T>(first)) * power_of_two<T>(k - first);
-}
-
 // The phi bands: outside the plain window, (A.2)'s homogeneity in (u, dy)
 // lets u and dy move by a power of two to wherever phi leaves room for them.
 // phi's binades are cut into bands of 2^band_bits; for each band, `top` is
