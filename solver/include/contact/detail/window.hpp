@@ -155,4 +155,28 @@ bool inside_plain_window(const T& u, const T& dy, const T& phi) {
          !std::signbit(phi);
 }
 
+// The stable path's first test, for binary32 and binary64: |u|, |dy| and
+// phi normal, phi > 0, and all three in [2^-C, 2^C), C = 128 (double) or 16
+// (float), inside the plain window. 2C binades is a power of two, so the
+// three offsets from 2^-C lie below 2^(2C) binades of bit patterns iff their
+// bitwise OR does: one comparison. Physical inputs lie well inside; the rest
+// of the plain window takes the band route, whose plain path gives the same s.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+inline constexpr int common_window = std::is_same_v<T, double> ? 128 : 16;
+static_assert(common_window<double> <= plain_window<double> && common_window<float> <= plain_window<float>);
+
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+bool inside_common_window(const T& u, const T& dy, const T& phi) {
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  constexpr bits lowest = bits(layout::bias - common_window<T>) << layout::significand_bits;  // bits(2^-C)
+  constexpr bits width = bits(2 * common_window<T>) << layout::significand_bits;
+  static_assert(std::has_single_bit(unsigned(2 * common_window<T>)), "one comparison of the OR");
+  const bits offsets = bits((std::bit_cast<bits>(u) & ~layout::sign) - lowest) |
+                       bits((std::bit_cast<bits>(dy) & ~layout::sign) - lowest) | bits(std::bit_cast<bits>(phi) - lowest);
+  return offsets < width;
+}
+
 }  // namespace contact::detail
