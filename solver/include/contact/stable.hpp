@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "cases.hpp"
@@ -141,6 +142,34 @@ T evaluate(Formula formula, const T& x, const T& y, const T& phi) {
 
 namespace detail {
 
+// The clamps of solve_cases, the neighbours of dy as next_down and next_up
+// give them. For float and double a neighbour is one step of dy's bit pattern
+// away from zero (from -0 for dy = +0), cheap enough to compute whether or not
+// the clamp takes it, so that each clamp is a select: near a rigid or a
+// vanishing barrier the computed root lands on -u or dy about half the time,
+// and a branch there is a coin toss.
+template <class T>
+T clamped_below_nonpositive(const T& s, const T& dy) {  // dy <= 0: s < dy, else next_down(dy)
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    using layout = binary_layout<T>;
+    const T below = std::bit_cast<T>(typename layout::bits((std::bit_cast<typename layout::bits>(dy) | layout::sign) + 1));
+    return s < dy ? s : below;
+  } else {
+    return s < dy ? s : next_down(dy);
+  }
+}
+
+template <class T>
+T clamped_above_positive(const T& s, const T& dy) {  // dy > 0: s > dy, else next_up(dy)
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    using bits = typename binary_layout<T>::bits;
+    const T above = std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + 1));
+    return s > dy ? s : above;
+  } else {
+    return s > dy ? s : next_up(dy);
+  }
+}
+
 // The four cases, once the input is valid and `plain` says whether plain T
 // arithmetic is safe (else the same formulas run on scaled<T>).
 template <bool plain, class T>
@@ -150,17 +179,15 @@ solution<T> solve_cases(const T& u, const T& dy, const T& phi) {
     T s = evaluate<plain>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi);
     // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
     // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
-    if (s < -u) s = -u;
-    if (!(s < dy)) s = next_down(dy);
-    return {s, contact_case::impact};
+    s = s < -u ? T(-u) : s;
+    return {clamped_below_nonpositive(s, dy), contact_case::impact};
   }
   if (stays_in_contact<plain>(u, dy, phi)) {
     T s = evaluate<plain>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi);
-    if (s > dy) s = dy;
-    return {s, contact_case::contact};
+    return {s > dy ? dy : s, contact_case::contact};
   }
   T s = evaluate<plain>([](const auto&... x) { return stable_form::release(x...); }, u, dy, phi);
-  if (!(s > dy)) s = next_up(dy);
+  s = clamped_above_positive(s, dy);
   if constexpr (!plain) {
     // a root a few ulps below the largest T can be computed beyond it and round
     // to infinity; the largest T is then the nearer. (Inside the plain window
@@ -205,8 +232,13 @@ template <class T>
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   int larger, smaller;  // binades of the larger and the smaller non-zero one of |u|, |dy|
   if (is_normal(u_magnitude) && is_normal(dy_magnitude)) [[likely]] {
-    larger = int((u_magnitude > dy_magnitude ? u_magnitude : dy_magnitude) >> layout::significand_bits) - layout::bias;
-    smaller = int((u_magnitude > dy_magnitude ? dy_magnitude : u_magnitude) >> layout::significand_bits) - layout::bias;
+    // max and min by arithmetic, as a compiler turns std::max into a branch
+    // here, and which of u, dy is larger is a coin toss
+    const int u_binade = int(u_magnitude >> layout::significand_bits) - layout::bias;
+    const int dy_binade = int(dy_magnitude >> layout::significand_bits) - layout::bias;
+    const int spread = std::abs(u_binade - dy_binade);
+    larger = (u_binade + dy_binade + spread) / 2;
+    smaller = larger - spread;
   } else {  // zeros and subnormals; infinities and NaN go on
     if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
     if (u_magnitude == 0 && dy_magnitude == 0) return solve_cases<true>(u, dy, phi);
