@@ -4,8 +4,10 @@
 // measured against the same formula in binary128 (enough for ranking: the
 // stable forms do not cancel), and the best ones certified by the reference.
 //
-//   witness-search [iterations-per-start] [starts] [seed]
+//   witness-search [iterations-per-start] [starts] [seed] [relative]
 //
+// With "relative" it climbs on |s - S| / |S| in units of 2^-53 instead (the
+// quantity the Gappa proofs bound; the printed certified error stays in ulps).
 // prints "branch u dy phi error" lines (hex), the format of
 // proofs/witnesses.txt, best first per branch.
 #include <quadmath.h>
@@ -60,6 +62,8 @@ double ulp_of(double exact) {
   return std::ldexp(1.0, std::max(e - 1, -1022) - 52);
 }
 
+bool relative = false;
+
 // The error in ulps, or -1 if the input leaves `branch` or the plain window.
 double error_of(const std::string& branch, const input& x) {
   if (!(x.phi >= 0) || !std::isfinite(x.u) || !std::isfinite(x.dy) || !std::isfinite(x.phi)) return -1;
@@ -69,7 +73,9 @@ double error_of(const std::string& branch, const input& x) {
   const quad exact = root_in_quad(branch, x);
   const double e = static_cast<double>(exact);
   if (e == 0 || !std::isfinite(r.s)) return -1;
-  return static_cast<double>(fabsq(quad(r.s) - exact) / quad(ulp_of(e)));
+  // relative: in units of 2^-53 of the exact value, the measure Gappa bounds
+  const quad unit = relative ? fabsq(exact) * quad(0x1p-53) : quad(ulp_of(e));
+  return static_cast<double>(fabsq(quad(r.s) - exact) / unit);
 }
 
 std::mt19937_64 rng;
@@ -144,6 +150,7 @@ int main(int argc, char** argv) {
   const long iterations = argc > 1 ? std::atol(argv[1]) : 20000;
   const int starts = argc > 2 ? std::atoi(argv[2]) : 200;
   rng.seed(argc > 3 ? std::strtoull(argv[3], nullptr, 10) : 20261123);
+  relative = argc > 4 && std::string(argv[4]) == "relative";
   const std::vector<std::string> branches = {"impact", "release_u_positive", "release_u_nonpositive", "contact"};
   for (const auto& branch : branches) {
     std::vector<found> best;
