@@ -19,7 +19,7 @@
 # cancel, and with both shares, the root's of u + root (1 / (1 + X)) and phi dy^2's of
 # the discriminant (W), functions of the one variable X, the bound is that of the
 # worst X: about 3 + X + 1.5 / (1 + X) <= 4.75 ulps; the split of X and E into
-# pieces proves 4.78. Each hint is an identity of rational functions, which Gappa
+# pieces proves 4.77. Each hint is an identity of rational functions, which Gappa
 # checks; the denominators it assumes non-zero (phi dy^2, the root, u + root, the
 # discriminant) are positive here.
 #@ -Eprecision=200
