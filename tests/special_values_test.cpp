@@ -128,5 +128,38 @@ TEST(StableHardCases, ListedInputsStayWithinBound) {
   }
 }
 
+// The inputs of proofs/witnesses.txt: the largest errors a search found per
+// branch ("branch u dy phi ulps"). 3 ulps is the bound the project aims at for
+// every branch; a witness above it shows that the branch's formula cannot be
+// proven to 3 ulps, whatever the proof, and its error stays below the claimed
+// bound, or the proofs would be wrong. The recorded error is checked, so the
+// file cannot drift from the reference.
+TEST(StableWitnesses, EachWitnessIsCertifiedInItsBranchAndWithinTheClaimedBound) {
+  constexpr double target = 3;
+  std::ifstream in(CONTACT_WITNESSES);
+  ASSERT_TRUE(in) << "cannot read " << CONTACT_WITNESSES;
+  std::map<std::string, int> witnesses;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line.substr(0, line.find('#')));
+    std::string branch, text[4];
+    if (!(fields >> branch)) continue;
+    for (auto& field : text) ASSERT_TRUE(fields >> field) << line;
+    const double u = std::strtod(text[0].c_str(), nullptr), dy = std::strtod(text[1].c_str(), nullptr),
+                 phi = std::strtod(text[2].c_str(), nullptr), recorded = std::strtod(text[3].c_str(), nullptr);
+    ++witnesses[branch];
+    const auto exact = reference::solve(u, dy, phi);
+    ASSERT_TRUE(exact.is_certified) << line;
+    const auto r = solve_stable(u, dy, phi);
+    EXPECT_EQ(r.which, exact.which) << line;
+    EXPECT_EQ(harness::branch_of(r.which, u > 0), branch) << line;
+    const double error = reference::ulp_error(r.s, exact);
+    EXPECT_NEAR(error, recorded, 1e-6) << line;
+    if (recorded > target) EXPECT_GT(error, target) << line;
+    EXPECT_LE(error, stable_bound(r.which, u > 0)) << line;
+  }
+  for (const char* branch : {"impact", "release_u_positive", "release_u_nonpositive"})
+    EXPECT_GE(witnesses[branch], 1) << "no witness for " << branch;
+}
+
 }  // namespace
 }  // namespace contact::testing

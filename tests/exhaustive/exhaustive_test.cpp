@@ -132,15 +132,16 @@ std::vector<T> values_in(binades range, bool both_signs) {
 // (proofs/gappa), but the argument holds at any precision: every intermediate
 // is its exact value times a factor in [(1 - u)^m, (1 - u)^-m], u = 2^-p,
 // where a rounding adds 1 to m, a product or quotient adds its operands' m, a
-// sum of terms of one sign takes the larger m and a square root halves it.
-// The branches' m are 3 (contact), 6 (impact), 6.5 and 3.5 (release, u > 0
-// and u <= 0; Gappa finds 4.5, not knowing that halving is exact), the
-// first-order terms of the proven bounds. So s is within relative error
-// (1 - u)^-m - 1 <= m u / (1 - m u) of s* (Bernoulli), that is within
+// sum of terms of one sign takes the larger m and a square root halves it;
+// the impact and release proofs weight the terms of a sum by their shares
+// instead. The branches' m are 3 (contact), 5.5 (impact), 4.77 and 3.5
+// (release, u > 0 and u <= 0), the first-order terms of the proven bounds. So
+// s is within relative error (1 - u)^-m - 1 <= m u / (1 - m u) of s*
+// (Bernoulli; to first order only for the weighted sums), that is within
 // m / (1 - m u) ulps of s* (ulp(s*) > |s*| u). For binary64 that is m plus a
-// term of order 2^-53, which the claimed k (3.01, 6.01, 6.51, 4.51) covers; at
+// term of order 2^-53, which the claimed k (3.01, 5.51, 4.78, 3.51) covers; at
 // p bits the term is of order 2^-p, and k / (1 - k u) >= m / (1 - m u) covers
-// it: 3.16, 6.63, 7.25 and 4.85 ulps at p = 6. An ulp is relative to the
+// it: 3.16, 6.03, 5.17 and 3.71 ulps at p = 6. An ulp is relative to the
 // format, so the bound is the same number of ulps but for that term. Free is
 // s = -u, exact. Without a fused fma, one ulp more, the allowance of the
 // property tests (unfused_fma_allowance, tests/harness.hpp): a branch's fma
