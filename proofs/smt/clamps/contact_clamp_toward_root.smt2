@@ -1,4 +1,4 @@
-; Claim: in case (A.31), when the computed s lies above dy, the clamp `if (s > dy) s = dy`
+; Claim: in case (A.31), when the computed s lies above dy, the clamp `s > dy ? dy : s`
 ; (solve_cases, contact) does not move s away from the root t of (A.2): |dy - t| <= |s - t|,
 ; because t <= dy (above dy, (A.2) times t is (t - dy)(t + dy + u) + dy (dy + u - phi dy) > 0).
 ; expect: unsat

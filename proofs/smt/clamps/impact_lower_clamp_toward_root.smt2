@@ -1,4 +1,4 @@
-; Claim: in case (A.30), when the computed s lies below -u, the clamp `if (s < -u) s = -u`
+; Claim: in case (A.30), when the computed s lies below -u, the clamp `s < -u ? -u : s`
 ; (solve_cases, impact) does not move s away from the root t of (A.2): |-u - t| <= |s - t|,
 ; because t >= -u (at t < -u every term of (A.2) times t is positive).
 ; expect: unsat
