@@ -21,7 +21,11 @@
 //     x the exact result, rn(x) its correct rounding, E the exponent of the
 //     larger term (the one the other is shifted to), k = 1 for a sum and
 //     k = 2 for fma (there the product may be the one kept and rounded: its
-//     rounding can move by up to twice what was dropped);
+//     rounding can move by up to twice what was dropped). On these formats
+//     every sum of case (a) is rounded correctly all the same (the dropped
+//     term lies far below half an ulp of the kept one, which is a value of
+//     T); an fma is not where its product is a tie that the dropped addend
+//     would have broken, so k = 2 is needed there;
 //   - a * b, a / b (b != 0) and square_root(a) (a >= 0; NaN for a < 0) are
 //     the exact result rounded once;
 //   - exact_product(a, b): high + low is a b exactly;
@@ -175,13 +179,13 @@ double into_format(const number& x) {
 struct property {
   const char* name;
   long checked = 0, failed = 0;
+  long case_a = 0, case_a_rounded = 0;  // of case (a), and how many are rounded correctly all the same
 };
 
 struct tally {
   std::vector<property> properties;
   std::vector<std::string> first_failures;
   static constexpr std::size_t kept = 20;
-  long case_a = 0, case_a_rounded = 0;  // sums and fmas of case (a), and how many are rounded correctly all the same
 
   property& operator[](const char* name) {
     for (auto& p : properties)
@@ -239,8 +243,8 @@ class checker {
     const number rn = rounded(x, p), got = exactly(r);
     const number allowance{integer(k), int(top) + denorm_min_exponent};
     t_.check(name, is_normalized(r) && sign(magnitude(got - x) - magnitude(rn - x) - allowance) <= 0, about);
-    ++t_.case_a;
-    t_.case_a_rounded += equal(got, rn);
+    ++t_[name].case_a;
+    t_[name].case_a_rounded += equal(got, rn);
   }
 
   void pair(const scaled<T>& a, const scaled<T>& b) {
@@ -337,8 +341,11 @@ int main() {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("scaled exhaustive: %ld operations checked, %ld failures\n", checked, failed);
-  for (const auto& p : t.properties) std::printf("  %-26s %ld checked, %ld failures\n", p.name, p.checked, p.failed);
-  std::printf("  case (a): %ld sums and fmas, %ld of them rounded correctly all the same\n", t.case_a, t.case_a_rounded);
+  for (const auto& p : t.properties) {
+    std::printf("  %-14s %9ld checked, %ld failures", p.name, p.checked, p.failed);
+    if (p.case_a > 0) std::printf(" (%ld of case (a), %ld of them rounded correctly all the same)", p.case_a, p.case_a_rounded);
+    std::printf("\n");
+  }
   std::printf("  %.1f s\n", seconds);
   for (const auto& f : t.first_failures) std::printf("  %s\n", f.c_str());
   return failed > 0 ? 1 : 0;
