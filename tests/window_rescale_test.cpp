@@ -144,6 +144,34 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
   EXPECT_EQ(contact::solve_stable(0x1p-1060, -0x1p-1070, 1.0).which, contact::contact_case::impact);
 }
 
+// A band's bounds hold for every phi in it: they are monotone in phi's
+// range, so any narrower range of phi inside a band leaves at least the
+// band's room (top no lower, lowest no higher). And the last band, where
+// 2 (1 + phi) overflows, admits nothing.
+template <class T>
+void expect_band_bounds_monotone() {
+  using bands = contact::detail::phi_bands<T>;
+  const int width = 1 << bands::band_bits;
+  for (int j = 0; j < bands::count; ++j) {
+    const int P = bands::least_binade + j * width;
+    const int Q = std::min(P + width - 1, bands::overflow_binade - 1);
+    const auto band = bands::table[j];
+    for (int low = P; low <= Q; low += 5)
+      for (int high = low; high <= Q; high += 7) {
+        const auto narrower = bands::of(low, high);
+        EXPECT_GE(narrower.top, band.top) << "band " << j << " phi binades " << low << ".." << high;
+        EXPECT_LE(narrower.lowest, band.lowest) << "band " << j << " phi binades " << low << ".." << high;
+      }
+  }
+  const auto last = bands::table[bands::count - 1];
+  EXPECT_GT(last.lowest, last.top - 1);  // no binade for the smaller of u, dy
+}
+
+TEST(PhiBands, EachBandsBoundsHoldForEveryPhiInIt) {
+  expect_band_bounds_monotone<double>();
+  expect_band_bounds_monotone<float>();
+}
+
 // binade_of and scaled<T>::shifted (the rescaled path's moves) at the edges of T's range.
 TEST(WindowRescale, BinadesAndExactShifts) {
   using contact::detail::binade_of;

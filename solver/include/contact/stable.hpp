@@ -254,14 +254,17 @@ template <class T>
   const bits s_magnitude = std::bit_cast<bits>(inside.s) & ~layout::sign;
   if (s_magnitude == 0) return inside;
   // s normal both before and after the move: the exponent field moves, exactly
-  // (a move beyond either end wraps or reaches the sign bit, which is_normal refuses)
+  // (a move beyond either end wraps or reaches the sign bit, which is_normal
+  // refuses). The band's bounds keep s itself normal in every case (docs/
+  // equations.md, section 6); it is checked all the same, in the one branch.
   const bits offset = bits(shift) << layout::significand_bits;
-  if (is_normal(s_magnitude) && is_normal(bits(s_magnitude - offset))) [[likely]]
+  const bool inside_normal = is_normal(s_magnitude);
+  if (inside_normal & is_normal(bits(s_magnitude - offset))) [[likely]]
     return {std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), inside.which};
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
   // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its
   // root, a few ulps from s, lies beyond the largest T: it keeps the infinity.
-  if (is_normal(s_magnitude) && binade_of(inside.s) - shift > std::numeric_limits<T>::max_exponent)
+  if (inside_normal & (binade_of(inside.s) - shift > std::numeric_limits<T>::max_exponent))
     return {std::numeric_limits<T>::infinity(), inside.which};
   return solve_cases<false>(u, dy, phi);
 }
