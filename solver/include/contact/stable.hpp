@@ -255,8 +255,9 @@ template <class T>
   if (s_magnitude == 0) return inside;
   // s normal both before and after the move: the exponent field moves, exactly
   // (a move beyond either end wraps or reaches the sign bit, which is_normal
-  // refuses). The band's bounds keep s itself normal in every case (docs/
-  // equations.md, section 6); it is checked all the same, in the one branch.
+  // refuses). The bands bound the intermediates, not the final division, so s
+  // itself is checked too; no test input has made it subnormal, hence one
+  // branch for both tests.
   const bits offset = bits(shift) << layout::significand_bits;
   const bool inside_normal = is_normal(s_magnitude);
   if (inside_normal & is_normal(bits(s_magnitude - offset))) [[likely]]
