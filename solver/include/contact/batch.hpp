@@ -8,11 +8,13 @@
 // order and with the same fma as stable.hpp, and selects its own result with
 // masks, so the compiler vectorises the loop. A block (or, with AVX-512, a
 // vector of 8 lanes) with lanes outside that window runs again rescaled: u
-// and dy move by one power of two into the window and s moves back, exactly
-// (the homogeneity that solve_stable uses outside its plain window). The lanes
-// that even that cannot answer (phi outside the window, zero or subnormal u or
-// dy, u and dy too far apart, a subnormal or overflowing s, NaN, infinity,
-// phi < 0) are solved by the scalar contact::solve_stable.
+// and dy move by one power of two to where phi's band leaves them room and s
+// moves back, exactly (the homogeneity and the bands that solve_stable uses
+// outside its plain window). The lanes that even that cannot answer (phi in
+// no band: phi >= 2^974 in double, 2^123 in float; subnormal phi in float;
+// zero or subnormal u or dy; u and dy too far apart for the band; a subnormal
+// or overflowing s; NaN, infinity, phi <= 0) are solved by the scalar
+// contact::solve_stable.
 //
 // The exact criterion of (A.21), u + dy - phi dy >= 0, is what stable.hpp
 // decides with an exact expansion (two_prod, then Shewchuk's sum with zero
@@ -31,6 +33,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -112,15 +115,17 @@ static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
 static_assert(vector_window<double> <= detail::plain_window<double> && vector_window<float> <= detail::plain_window<float>,
               "inside safe_window's half-width");
 
-// Out-of-window lanes: (A.2) is homogeneous in (u, dy), so a lane whose phi
-// lies in the vector window moves u and dy by one power of two, the larger of
-// |u| and |dy| into [2^(E-1), 2^E), and s back at the end, as solve_stable
-// does outside the plain window. The shift is added to the bit patterns (in
-// units of the exponent field), which is exact for normal u and dy landing on
-// normal values; the smaller lands inside the vector window iff their binades
-// span less than 2E, which inside_window tests on the moved values. Zero,
-// subnormal, infinite and NaN u or dy fail both_normal and, like a subnormal
-// or overflowing s, go to the scalar path.
+// Out-of-window lanes: (A.2) is homogeneous in (u, dy), so u and dy may move
+// by one power of two and s back at the end, as solve_stable does outside its
+// plain window: by phi's band (detail::phi_bands), the larger of |u| and |dy|
+// into [2^(top-1), 2^top), taken only if the smaller then lies at or above
+// 2^lowest. Inside that box no intermediate of the plain formulas over- or
+// underflows (docs/equations.md, section 6; proofs/gappa/window/), so the
+// plain-T lane computes what scaled<T> would, whichever power of two moved it.
+// The shift is added to the bit patterns (in units of the exponent field),
+// which is exact for normal u and dy landing on normal values. Zero,
+// subnormal, infinite and NaN u or dy fail both_normal and, like phi in no
+// band and a subnormal or overflowing s, go to the scalar path.
 template <class T>
 inline constexpr bits_t<T> significand_mask = (bits_t<T>(1) << detail::binary_layout<T>::significand_bits) - 1;
 
@@ -133,18 +138,6 @@ inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << detail::binary
 template <class T>
 inline constexpr bits_t<T> normal_span = std::bit_cast<bits_t<T>>(std::numeric_limits<T>::infinity()) - smallest_normal_bits<T>;
 
-template <class T>
-inline constexpr bits_t<T> window_top_binade =  // bits(2^(E-1))
-    bits_t<T>(detail::binary_layout<T>::bias - 1 + vector_window<T>) << detail::binary_layout<T>::significand_bits;
-
-template <class T>
-CONTACT_BATCH_INLINE bits_t<T> rescaling(bits_t<T> u_bits, bits_t<T> dy_bits) {
-  using U = bits_t<T>;
-  const U abs_u = u_bits & ~sign_mask<T>, abs_dy = dy_bits & ~sign_mask<T>;
-  const U top = abs_u > abs_dy ? abs_u : abs_dy;
-  return U(window_top_binade<T> - (top & ~significand_mask<T>));
-}
-
 // |u| and |dy| normal: bits(|x|) - bits(least normal) < bits(inf) - bits(least normal), unsigned.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) {
@@ -152,6 +145,71 @@ CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) 
   const U u_offset = U((u_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
   const U dy_offset = U((dy_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
   return mask<T>(u_offset < normal_span<T>) & mask<T>(dy_offset < normal_span<T>);
+}
+
+// phi_bands<T>' table in the units the lane works in: the band's index read
+// off phi's exponent field, and per band the bits of 2^(top-1) and the room
+// top - 1 - lowest (how many binades the smaller of |u|, |dy| may lie below
+// the larger), both in units of the exponent field, so that the lane looks
+// them up and compares without converting binades.
+template <class T>
+struct band_moves {
+  using U = bits_t<T>;
+  using bands = detail::phi_bands<T>;
+  static constexpr int significand_bits = detail::binary_layout<T>::significand_bits;
+  static constexpr int bias = detail::binary_layout<T>::bias;
+  static constexpr U field_of(int binade) { return U(bias + binade) << significand_bits; }
+
+  // band = (field + index_offset) >> band_bits, with field - bias the binade of a normal phi
+  static constexpr int index_offset = -bias - bands::least_binade;
+  static_assert(index_offset >= 0);
+  static_assert(((int(std::bit_cast<U>(std::numeric_limits<T>::infinity()) >> significand_bits) + index_offset) >>
+                 bands::band_bits) < bands::count,
+                "any phi without its sign bit indexes the table; the phi test below refuses the bands that hold nothing");
+
+  // A subnormal phi's field (0) reads as binade -bias, which names the band of
+  // every subnormal binade only if they all share a band: in double they do,
+  // in float they straddle two, and subnormal phi goes to the scalar path.
+  static constexpr bool subnormal_phi_in_one_band = ((-bias - bands::least_binade) >> bands::band_bits) == 0;
+  static constexpr U phi_least = subnormal_phi_in_one_band ? U(1) : smallest_normal_bits<T>;
+  // phi from the first band that holds nothing up (2^974 in double, 2^123 in float)
+  static constexpr int first_empty_band = [] {
+    int j = 0;
+    while (j < bands::count && bands::table[j].lowest < bands::overflow_binade) ++j;
+    return j;
+  }();
+  static_assert(first_empty_band < bands::count, "the last bands hold nothing: 2 (1 + phi) overflows");
+  static constexpr U phi_end = field_of(bands::least_binade + (first_empty_band << bands::band_bits));
+
+  static constexpr std::array<U, bands::count> top_binade = [] {  // bits(2^(top-1))
+    std::array<U, bands::count> fields{};
+    for (int j = 0; j < first_empty_band; ++j) fields[j] = field_of(bands::table[j].top - 1);
+    return fields;
+  }();
+  static constexpr std::array<U, bands::count> room = [] {
+    std::array<U, bands::count> rooms{};
+    for (int j = 0; j < first_empty_band; ++j)
+      rooms[j] = U(bands::table[j].top - 1 - bands::table[j].lowest) << significand_bits;
+    return rooms;
+  }();
+};
+
+// The shift (to add to the bit patterns of u and dy) by phi's band; `fits` is
+// all ones where the lane may take it: u and dy normal, phi > 0 in a band that
+// holds something, and the binades of |u| and |dy| within the band's room.
+// The table lookups are gathers, no lane branches.
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bits, bits_t<T> phi_bits, bits_t<T>& fits) {
+  using U = bits_t<T>;
+  using moves = band_moves<T>;
+  const U abs_u = u_bits & ~sign_mask<T>, abs_dy = dy_bits & ~sign_mask<T>;
+  const U larger_binade = (abs_u > abs_dy ? abs_u : abs_dy) & ~significand_mask<T>;
+  const U smaller_binade = (abs_u > abs_dy ? abs_dy : abs_u) & ~significand_mask<T>;
+  const U band =
+      U(((phi_bits & ~sign_mask<T>) >> moves::significand_bits) + moves::index_offset) >> detail::phi_bands<T>::band_bits;
+  const U phi_in_a_band = mask<T>(U(phi_bits - moves::phi_least) < U(moves::phi_end - moves::phi_least));
+  fits = both_normal<T>(u_bits, dy_bits) & phi_in_a_band & mask<T>(U(larger_binade - smaller_binade) <= moves::room[band]);
+  return U(moves::top_binade[band] - larger_binade);
 }
 
 // s moved back by the shift: exact where the result is normal or s is 0;
@@ -168,17 +226,18 @@ CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
 
 // One lane of the branch-free path. Returns all ones if s and which are
 // solve_stable's, and zero if the lane must be redone by the scalar path: it
-// lies outside the vector window, or (A.21)'s exact sum is so close to 0 that
-// the filter below cannot tell its sign.
-// With `rescaled`, u and dy first move into the window (and s back).
+// lies outside the vector window (with `rescaled`: u and dy cannot move into
+// phi's band box, or s cannot move back), or (A.21)'s exact sum is so close
+// to 0 that the filter below cannot tell its sign.
+// With `rescaled`, u and dy first move by phi's band, and s back at the end.
 template <bool rescaled, class T>
 CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
   using U = bits_t<T>;
   const U u_bits = std::bit_cast<U>(u_in), dy_bits = std::bit_cast<U>(dy_in);
-  const U shift = rescaled ? rescaling<T>(u_bits, dy_bits) : U(0);
+  U inside, shift = 0;  // inside: the plain formulas are safe on the lane's (moved) operands
+  if constexpr (rescaled) shift = band_rescaling<T>(u_bits, dy_bits, std::bit_cast<U>(phi), inside);
   const T u = std::bit_cast<T>(U(u_bits + shift)), dy = std::bit_cast<T>(U(dy_bits + shift));
-  U inside = inside_window(std::fabs(u), std::fabs(dy), phi);
-  if constexpr (rescaled) inside &= both_normal<T>(u_bits, dy_bits);
+  if constexpr (!rescaled) inside = inside_window(std::fabs(u), std::fabs(dy), phi);
   const U no_contact_before = mask<T>(dy <= 0);
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
@@ -193,16 +252,21 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
 
   // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
   // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
-  // 2^-p (|a| + |b| + phi dy) (p = precision; no underflow inside the window),
-  // so |b| > 2^(3-p) (|a| + phi dy) gives its sign. The rare lanes it cannot
-  // decide go to the scalar path, whose exact expansion decides them.
+  // 2^-p (|a| + |b| + phi dy) (p = precision), so |b| > 2^(3-p) (|a| + phi dy)
+  // gives its sign. The rare lanes it cannot decide go to the scalar path,
+  // whose exact expansion decides them. The bound needs phi dy and the bound
+  // itself normal (sums round relatively even when subnormal). Inside the
+  // vector window they are. On the rescaled path phi's band has
+  // dy >= 2^lowest >= 2^(emin - Pe + 2p - 2) (phi_bands::of; phi >= 2^P,
+  // Pe = max(P, emin)), so phi dy >= 2^(emin + p - 1) (P >= emin - p + 1 when
+  // P < emin) and the bound >= 2^(emin + 2).
   const T b = a - x;  // on dy > 0 lanes, x = phi dy >= 0
   constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
   const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + x) * filter);
 
   // The case masks, each from its own comparison (no ~ on masks: fewer
   // instructions). u <= gap is a <= 0: u + dy rounds to a number of its sign
-  // (inside the window no sum is small enough to round to 0).
+  // (a sum is exact where it is subnormal, so it rounds to 0 only if it is 0).
   const U contact_before = mask<T>(dy > 0);
   const U is_free = no_contact_before & mask<T>(a <= 0);
   const U is_impact = no_contact_before & mask<T>(!(a <= 0));
