@@ -212,15 +212,20 @@ CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bit
   return U(moves::top_binade[band] - larger_binade);
 }
 
-// s moved back by the shift: exact where the result is normal or s is 0;
-// `normal` is all ones there, else zero.
+// s moved back by the shift: exact where s is 0 or normal both before and
+// after the move; `normal` is all ones there, else zero. The band boxes bound
+// the intermediates, not s: a subnormal s rounded where scaled<T> would not
+// (and an infinite one has no exponent to move), so, as in solve_stable, the
+// scalar path rounds those once.
 template <class T>
 CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
   using U = bits_t<T>;
   const U s_bits = std::bit_cast<U>(s);
   const U abs_s = s_bits & ~sign_mask<T>;
   const U is_zero = mask<T>(abs_s == 0);
-  normal = mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>) | is_zero;
+  normal = (mask<T>(U(abs_s - smallest_normal_bits<T>) < normal_span<T>) &
+            mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>)) |
+           is_zero;
   return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
 }
 
