@@ -356,25 +356,43 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
 
 #if defined(__AVX512F__)
 // The lanes i .. i + 7 that solve_lanes_avx512 left unsolved (bits of `solved`
-// clear): lane<true> on all eight (vectorised, the rescaling of out-of-window
-// lanes), then the scalar path for those it cannot answer either.
-[[gnu::noinline]] inline void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
-                                                   const double* __restrict phi, double* __restrict s,
-                                                   int* __restrict which, std::ptrdiff_t i, unsigned solved) {
-  double rescaled_s[8];
-  std::int64_t rescaled_case[8];
-  std::uint64_t rescaled_solved[8];
+// clear): lane<true> on all eight (vectorised: phi's band moves out-of-window
+// lanes), then the scalar path for those it cannot answer either. Which lanes
+// the first pass left and which this one answers varies from vector to vector
+// without a pattern, so the answers are merged with masked stores rather than
+// a branch per lane (mispredicted branches cost more than the pass itself).
+CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
+                                               const double* __restrict phi, double* __restrict s,
+                                               int* __restrict which, std::ptrdiff_t i, unsigned solved) {
+  alignas(64) double rescaled_s[8];
+  alignas(64) std::int64_t rescaled_case[8];
+  alignas(64) std::uint64_t rescaled_solved[8];
   for (int k = 0; k < 8; ++k)
     rescaled_solved[k] = lane<true>(u[i + k], dy[i + k], phi[i + k], rescaled_s[k], rescaled_case[k]);
-  for (int k = 0; k < 8; ++k) {
-    if ((solved >> k) & 1) continue;
-    if (rescaled_solved[k]) {
-      s[i + k] = rescaled_s[k];
-      which[i + k] = static_cast<int>(rescaled_case[k]);
-    } else {
-      solve_scalar_lane(u, dy, phi, s, which, i + k);
-    }
-  }
+  const __m512i answers = _mm512_load_si512(rescaled_solved);
+  const __mmask8 answered = _mm512_test_epi64_mask(answers, answers);
+  const __mmask8 taken = answered & ~__mmask8(solved);
+  _mm512_mask_storeu_pd(s + i, taken, _mm512_load_pd(rescaled_s));
+  _mm256_mask_storeu_epi32(which + i, taken, _mm512_cvtepi64_epi32(_mm512_load_si512(rescaled_case)));
+  for (unsigned left = ~(solved | answered) & 0xFFu; left != 0; left &= left - 1)
+    solve_scalar_lane(u, dy, phi, s, which, i + std::countr_zero(left));
+}
+
+// The vectors that solve_lanes_avx512 left partly unsolved, collected so that
+// their rescaled passes run one after the other: they are independent, and
+// out-of-order execution overlaps one's square root and division with the
+// next one's (one pass at a time after each vector waits for them in turn).
+struct unsolved_vectors {
+  static constexpr int capacity = 32;
+  std::ptrdiff_t start[capacity];
+  unsigned solved[capacity];
+  int count = 0;
+};
+
+[[gnu::noinline]] inline void solve_rescaled(const double* __restrict u, const double* __restrict dy,
+                                             const double* __restrict phi, double* __restrict s, int* __restrict which,
+                                             const unsolved_vectors& vectors) {
+  for (int v = 0; v < vectors.count; ++v) solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.solved[v]);
 }
 
 // The same lanes with AVX-512 written out, for double: the operations of lane()
@@ -394,6 +412,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
   const __m512d sign_bit = _mm512_set1_pd(-0.0);
   const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
   const __m512i lowest = _mm512_set1_epi64(std::int64_t(window_lowest<double>));  // inside_window()'s test
+  const __m512d window_least = _mm512_castsi512_pd(lowest);                           // 2^-E
   const __m512i width = _mm512_set1_epi64(std::int64_t(window_width<double>));
   const __m512i one_bit = _mm512_set1_epi64(1);
   const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
@@ -408,7 +427,12 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     up_to_root l;
     l.u = _mm512_loadu_pd(u_in + j);
     l.dy = _mm512_loadu_pd(dy_in + j);
-    l.phi = _mm512_loadu_pd(phi_in + j);
+    const __m512d phi = _mm512_loadu_pd(phi_in + j);
+    // A lane with phi below the window is answered again later; 1 in place of
+    // its phi keeps a subnormal phi out of this pass's products (a subnormal
+    // operand costs a microcode assist on many cores, about as much as the
+    // rest of the 8 lanes together).
+    l.phi = _mm512_mask_mov_pd(phi, _mm512_cmp_pd_mask(phi, window_least, _CMP_LT_OQ), one);
     l.abs_dy = _mm512_andnot_pd(sign_bit, l.dy);
     l.no_contact_before = _mm512_cmp_pd_mask(l.dy, zero, _CMP_LE_OQ);
     l.a = _mm512_add_pd(l.u, l.dy);
@@ -419,15 +443,16 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
   };
   up_to_root next{};
   if (n >= 8) next = start(0);
+  unsolved_vectors unsolved;
   for (; i + 8 <= n; i += 8) {
     const up_to_root l = next;
     if (i + 16 <= n) next = start(i + 8);
     const __m512d u = l.u, dy = l.dy, phi = l.phi, abs_dy = l.abs_dy, a = l.a, x = l.x, z = l.z, root = l.root;
     const __mmask8 no_contact_before = l.no_contact_before;
-    const __m512d abs_u = _mm512_andnot_pd(sign_bit, u);
+    const __m512d abs_u = _mm512_andnot_pd(sign_bit, u), raw_phi = _mm512_loadu_pd(phi_in + i);
     const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_castpd_si512(abs_u), lowest),
                                                      _mm512_sub_epi64(_mm512_castpd_si512(abs_dy), lowest),
-                                                     _mm512_sub_epi64(_mm512_castpd_si512(phi), lowest), 0xFE);
+                                                     _mm512_sub_epi64(_mm512_castpd_si512(raw_phi), lowest), 0xFE);
     const __mmask8 inside = _mm512_cmplt_epu64_mask(spread, width);
     const __mmask8 contact_before = _mm512_cmp_pd_mask(dy, zero, _CMP_GT_OQ);
     const __m512d b = _mm512_sub_pd(a, x);
@@ -462,9 +487,17 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i),
                         _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case));
     const __mmask8 solved = inside & (no_contact_before | decided);
-    if (solved != 0xFF) [[unlikely]]  // out of line: the hot loop stays short
-      solve_eight_rescaled(u_in, dy_in, phi_in, s_out, which_out, i, solved);
+    // noted without a branch (where out-of-window lanes are common, whether a
+    // vector holds one is a coin toss); solved out of line, the hot loop stays short
+    unsolved.start[unsolved.count] = i;
+    unsolved.solved[unsolved.count] = solved;
+    unsolved.count += solved != 0xFF;
+    if (unsolved.count == unsolved_vectors::capacity) [[unlikely]] {
+      solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);
+      unsolved.count = 0;
+    }
   }
+  if (unsolved.count != 0) solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);
   for (; i < n; ++i) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i);  // the last n mod 8 lanes
 }
 #endif
