@@ -229,6 +229,28 @@ CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
   return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
 }
 
+// A subnormal phi (double only: float's subnormal phi stays on the scalar
+// path) as an operand of a product costs a microcode assist on many cores,
+// about as much as the rest of the rescaled pass. Its products with dy are
+// formed as (phi 2^64) (dy 2^-64) instead: phi 2^64 is normal and exact (its
+// bits, an integer below 2^52, convert exactly), and dy 2^-64 too, as phi's
+// band (the first) has |dy| >= 2^lowest = 2^104 there.
+template <class T>
+CONTACT_BATCH_INLINE std::array<T, 2> product_factors(T phi, T dy) {
+  if constexpr (band_moves<T>::subnormal_phi_in_one_band) {
+    using U = bits_t<T>;
+    constexpr T two_to_k = T(0x1p64);
+    static_assert(detail::phi_bands<T>::table[0].lowest - 64 >= std::numeric_limits<T>::min_exponent);
+    constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * two_to_k;  // a phi bit, times 2^64
+    const U phi_bits = std::bit_cast<U>(phi);
+    const U subnormal = mask<T>(U(phi_bits - 1) < U(smallest_normal_bits<T> - 1));
+    const T phi_up = T(std::make_signed_t<U>(phi_bits)) * least_subnormal_up;
+    return {pick(subnormal, phi_up, phi), pick(subnormal, T(dy / two_to_k), dy)};
+  } else {
+    return {phi, dy};
+  }
+}
+
 // One lane of the branch-free path. Returns all ones if s and which are
 // solve_stable's, and zero if the lane must be redone by the scalar path: it
 // lies outside the vector window (with `rescaled`: u and dy cannot move into
@@ -244,6 +266,9 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T u = std::bit_cast<T>(U(u_bits + shift)), dy = std::bit_cast<T>(U(dy_bits + shift));
   if constexpr (!rescaled) inside = inside_window(std::fabs(u), std::fabs(dy), phi);
   const U no_contact_before = mask<T>(dy <= 0);
+  // phi's two products with dy, phi |dy| and phi (2 dy), as phi_factor times
+  // dy_factor: the same exact products, so the same roundings.
+  const auto [phi_factor, dy_factor] = rescaled ? product_factors(phi, dy) : std::array<T, 2>{phi, dy};
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
   // discriminant u^2 + 4 (phi gap) (u - gap), (A.32) release has
@@ -251,7 +276,7 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   // lane's own operands. gap = -dy = |dy| on the lanes of (A.30), so phi gap
   // and phi dy are both phi |dy|, and u - gap is the same sum as u + dy.
   const T a = u + dy;
-  const T x = phi * std::fabs(dy);                       // impact: push = phi gap; release: phi dy
+  const T x = phi_factor * std::fabs(dy_factor);         // impact: push = phi gap; release: phi dy
   const T z = x * pick(no_contact_before, a, dy);        // impact: push (u - gap); release: phi dy^2
   const T root = std::sqrt(std::fma(u, u, T(4) * z));
 
@@ -283,7 +308,7 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T one_plus_phi = T(1) + phi;
   T numerator = pick(rationalised, T(T(2) * z), T(root - u));  // release
   T denominator = pick(rationalised, T(u + root), T(2));
-  numerator = pick(is_contact, std::fma(phi, T(2) * dy, -u), numerator);
+  numerator = pick(is_contact, std::fma(phi_factor, T(2) * dy_factor, -u), numerator);
   denominator = pick(is_contact, one_plus_phi, denominator);
   numerator = pick(is_impact, T(-((u + T(2) * x) + root)), numerator);
   denominator = pick(is_impact, T(T(2) * one_plus_phi), denominator);
