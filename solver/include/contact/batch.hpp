@@ -197,7 +197,7 @@ struct band_moves {
 // The shift (to add to the bit patterns of u and dy) by phi's band; `fits` is
 // all ones where the lane may take it: u and dy normal, phi > 0 in a band that
 // holds something, and the binades of |u| and |dy| within the band's room.
-// The table lookups are gathers, no lane branches.
+// The table lookups are gathers (or a load per lane), never a branch.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bits, bits_t<T> phi_bits, bits_t<T>& fits) {
   using U = bits_t<T>;
