@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "contact/batch.hpp"
@@ -155,6 +156,123 @@ TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
     }
   }
 }
+
+// Lanes for the rescaled pass's phi bands (detail::phi_bands): phi at both
+// edges of every band and inside it, subnormal phi, phi in no band (from 2^974
+// in double, 2^123 in float), and u, dy whose binades lie around the band's
+// room apart (the larger anywhere in T's range, so that s sometimes cannot
+// move back), plus lanes of (A.31) where 2 phi dy is close to u and s is far
+// below u and dy.
+template <class T>
+lanes<T> band_inputs(std::uint64_t seed, int lanes_per_phi) {
+  using bands = contact::detail::phi_bands<T>;
+  using limits = std::numeric_limits<T>;
+  harness::seeded_source source(seed);
+  auto pick = [&](long n) { return static_cast<int>(source.integer(0, n - 1)); };
+  auto at_binade = [&](int binade) { return std::ldexp(T(1 + harness::unit(source)), binade); };
+  std::vector<T> phis;
+  for (int j = 0; j < bands::count; ++j) {
+    const int P = bands::least_binade + (j << bands::band_bits), width = 1 << bands::band_bits;
+    const T first = std::ldexp(T(1), P);
+    phis.push_back(first);
+    phis.push_back(contact::detail::next_up(first));
+    if (j > 0) phis.push_back(contact::detail::next_down(first));  // the last of the band below
+    for (int k = 0; k < 4; ++k) {
+      const int binade = P + pick(width);
+      if (binade < limits::max_exponent) phis.push_back(binade < limits::min_exponent - 1 ? std::ldexp(T(1), binade) * T(1 + pick(7)) : at_binade(binade));
+    }
+  }
+  for (int k = 0; k < 8; ++k) phis.push_back(limits::denorm_min() * T(1 + source.integer(0, 1L << (limits::digits - 2))));
+  phis.push_back(limits::min());
+  phis.push_back(contact::detail::next_down(limits::min()));
+  phis.push_back((limits::max)());
+
+  lanes<T> in;
+  for (const T phi : phis) {
+    const auto band = bands::of_phi(phi);
+    const bool empty = band.lowest >= bands::overflow_binade;
+    const int room = empty ? 100 : band.top - 1 - band.lowest;
+    for (int k = 0; k < lanes_per_phi; ++k) {
+      const int larger = limits::min_exponent - 1 + pick(limits::max_exponent - limits::min_exponent + 1);
+      const int spread = pick(4) == 0 ? pick(room + 1) : room - 2 + pick(5);
+      const T big = at_binade(larger), small = at_binade(larger - spread);  // small may be subnormal or 0
+      const bool u_larger = harness::coin(source);
+      in.add(harness::random_sign(source, u_larger ? big : small), harness::random_sign(source, u_larger ? small : big), phi);
+    }
+    for (int k = 0; k < lanes_per_phi / 4; ++k) {  // (A.31) with u = 2 phi dy, a few ulps off
+      const T dy = at_binade(limits::min_exponent - 1 + pick(limits::max_exponent - limits::min_exponent + 1));
+      const T u = contact::detail::ulp_steps(T(T(2) * phi * dy), pick(9) - 4);
+      if (std::isfinite(u)) in.add(u, dy, phi);
+    }
+  }
+  return in;
+}
+
+// What the rescaled pass may take on: u and dy normal, phi > 0 in a band that
+// holds something, and their binades at most the band's room apart.
+template <class T>
+bool inside_a_band_box(T u, T dy, T phi) {
+  using bands = contact::detail::phi_bands<T>;
+  if (!std::isnormal(u) || !std::isnormal(dy) || !(phi > 0) || !std::isfinite(phi)) return false;
+  const auto band = bands::of_phi(phi);
+  if (band.lowest >= bands::overflow_binade) return false;
+  const int u_binade = contact::detail::binade_of(u), dy_binade = contact::detail::binade_of(dy);
+  return std::abs(u_binade - dy_binade) <= band.top - 1 - band.lowest;
+}
+
+// lane<true> answers only lanes inside a band box, and answers them as
+// solve_stable does; and it answers most of those whose phi lies outside the
+// vector window and whose s is normal (the rest: the pre-test's undecided
+// lanes, and s subnormal before it moves back), the band's room included.
+template <class T>
+void expect_band_lanes_solved_in_vector_code(const lanes<T>& in) {
+  using case_number = std::make_signed_t<contact::batch_detail::bits_t<T>>;
+  long eligible = 0, solved = 0, solved_at_room = 0, mismatches = 0, outside_boxes = 0;
+  for (std::size_t i = 0; i < in.u.size(); ++i) {
+    const T u = in.u[i], dy = in.dy[i], phi = in.phi[i];
+    T s;
+    case_number which;
+    const bool lane_solved = contact::batch_detail::lane<true>(u, dy, phi, s, which) != 0;
+    const auto scalar = contact::solve_stable(u, dy, phi);
+    const bool box = inside_a_band_box(u, dy, phi);
+    if (lane_solved && (!identical(scalar.s, s) || static_cast<int>(scalar.which) != static_cast<int>(which))) {
+      if (++mismatches <= 10)
+        ADD_FAILURE() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi << ": lane s=" << s << " case "
+                      << which << ", scalar s=" << scalar.s << " case " << static_cast<int>(scalar.which);
+    }
+    if (lane_solved && !box && ++outside_boxes <= 10)
+      ADD_FAILURE() << std::hexfloat << "outside every band box: u=" << u << " dy=" << dy << " phi=" << phi;
+    // float's subnormal phi straddles two bands; the lane leaves it to the scalar path
+    constexpr int window = contact::batch_detail::vector_window<T>;
+    const bool phi_outside_vector_window = (std::ilogb(phi) >= window || std::ilogb(phi) < -window) &&
+                                           (std::is_same_v<T, double> || std::isnormal(phi));
+    if (box && phi_outside_vector_window && (std::isnormal(scalar.s) || scalar.s == 0)) {
+      ++eligible;
+      solved += lane_solved;
+      const auto band = contact::detail::phi_bands<T>::of_phi(phi);
+      solved_at_room += lane_solved && std::abs(contact::detail::binade_of(u) - contact::detail::binade_of(dy)) ==
+                                           band.top - 1 - band.lowest;
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(outside_boxes, 0);
+  EXPECT_GT(eligible, 1000);
+  EXPECT_GT(solved, eligible * 9 / 10) << "of " << eligible;
+  EXPECT_GT(solved_at_room, 50);
+}
+
+TEST(Batch, RescaledLanesTakePhiBandsAsSolveStableDoes) {
+  expect_band_lanes_solved_in_vector_code(band_inputs<double>(21, 200));
+  expect_band_lanes_solved_in_vector_code(band_inputs<float>(22, 200));
+}
+
+TEST(Batch, DoubleBandLanesEqualScalarStableBitForBit) {
+  const auto in = band_inputs<double>(23, 200);
+  expect_same_as_scalar(in);                                            // AVX-512 where compiled for it
+  expect_same_as_scalar(in, contact::batch_detail::solve_lanes<double>);  // the portable kernel
+}
+
+TEST(Batch, FloatBandLanesEqualScalarStableBitForBit) { expect_same_as_scalar(band_inputs<float>(24, 200)); }
 
 TEST(Batch, LongDoubleLanesEqualScalarStable) {
   const auto in = inputs<long double>(2000, 4);

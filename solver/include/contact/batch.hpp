@@ -8,11 +8,13 @@
 // order and with the same fma as stable.hpp, and selects its own result with
 // masks, so the compiler vectorises the loop. A block (or, with AVX-512, a
 // vector of 8 lanes) with lanes outside that window runs again rescaled: u
-// and dy move by one power of two into the window and s moves back, exactly
-// (the homogeneity that solve_stable uses outside its plain window). The lanes
-// that even that cannot answer (phi outside the window, zero or subnormal u or
-// dy, u and dy too far apart, a subnormal or overflowing s, NaN, infinity,
-// phi < 0) are solved by the scalar contact::solve_stable.
+// and dy move by one power of two to where phi's band leaves them room and s
+// moves back, exactly (the homogeneity and the bands that solve_stable uses
+// outside its plain window). The lanes that even that cannot answer (phi in
+// no band: phi >= 2^974 in double, 2^123 in float; subnormal phi in float;
+// zero or subnormal u or dy; u and dy too far apart for the band; a subnormal
+// or overflowing s; NaN, infinity, phi <= 0) are solved by the scalar
+// contact::solve_stable.
 //
 // The exact criterion of (A.21), u + dy - phi dy >= 0, is what stable.hpp
 // decides with an exact expansion (two_prod, then Shewchuk's sum with zero
@@ -31,6 +33,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -112,15 +115,17 @@ static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
 static_assert(vector_window<double> <= detail::plain_window<double> && vector_window<float> <= detail::plain_window<float>,
               "inside safe_window's half-width");
 
-// Out-of-window lanes: (A.2) is homogeneous in (u, dy), so a lane whose phi
-// lies in the vector window moves u and dy by one power of two, the larger of
-// |u| and |dy| into [2^(E-1), 2^E), and s back at the end, as solve_stable
-// does outside the plain window. The shift is added to the bit patterns (in
-// units of the exponent field), which is exact for normal u and dy landing on
-// normal values; the smaller lands inside the vector window iff their binades
-// span less than 2E, which inside_window tests on the moved values. Zero,
-// subnormal, infinite and NaN u or dy fail both_normal and, like a subnormal
-// or overflowing s, go to the scalar path.
+// Out-of-window lanes: (A.2) is homogeneous in (u, dy), so u and dy may move
+// by one power of two and s back at the end, as solve_stable does outside its
+// plain window: by phi's band (detail::phi_bands), the larger of |u| and |dy|
+// into [2^(top-1), 2^top), taken only if the smaller then lies at or above
+// 2^lowest. Inside that box no intermediate of the plain formulas over- or
+// underflows (docs/equations.md, section 6; proofs/gappa/window/), so the
+// plain-T lane computes what scaled<T> would, whichever power of two moved it.
+// The shift is added to the bit patterns (in units of the exponent field),
+// which is exact for normal u and dy landing on normal values. Zero,
+// subnormal, infinite and NaN u or dy fail both_normal and, like phi in no
+// band and a subnormal or overflowing s, go to the scalar path.
 template <class T>
 inline constexpr bits_t<T> significand_mask = (bits_t<T>(1) << detail::binary_layout<T>::significand_bits) - 1;
 
@@ -133,18 +138,6 @@ inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << detail::binary
 template <class T>
 inline constexpr bits_t<T> normal_span = std::bit_cast<bits_t<T>>(std::numeric_limits<T>::infinity()) - smallest_normal_bits<T>;
 
-template <class T>
-inline constexpr bits_t<T> window_top_binade =  // bits(2^(E-1))
-    bits_t<T>(detail::binary_layout<T>::bias - 1 + vector_window<T>) << detail::binary_layout<T>::significand_bits;
-
-template <class T>
-CONTACT_BATCH_INLINE bits_t<T> rescaling(bits_t<T> u_bits, bits_t<T> dy_bits) {
-  using U = bits_t<T>;
-  const U abs_u = u_bits & ~sign_mask<T>, abs_dy = dy_bits & ~sign_mask<T>;
-  const U top = abs_u > abs_dy ? abs_u : abs_dy;
-  return U(window_top_binade<T> - (top & ~significand_mask<T>));
-}
-
 // |u| and |dy| normal: bits(|x|) - bits(least normal) < bits(inf) - bits(least normal), unsigned.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) {
@@ -154,32 +147,128 @@ CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) 
   return mask<T>(u_offset < normal_span<T>) & mask<T>(dy_offset < normal_span<T>);
 }
 
-// s moved back by the shift: exact where the result is normal or s is 0;
-// `normal` is all ones there, else zero.
+// phi_bands<T>' table in the units the lane works in: the band's index read
+// off phi's exponent field, and per band the bits of 2^(top-1) and the room
+// top - 1 - lowest (how many binades the smaller of |u|, |dy| may lie below
+// the larger), both in units of the exponent field, so that the lane looks
+// them up and compares without converting binades.
+template <class T>
+struct band_moves {
+  using U = bits_t<T>;
+  using bands = detail::phi_bands<T>;
+  static constexpr int significand_bits = detail::binary_layout<T>::significand_bits;
+  static constexpr int bias = detail::binary_layout<T>::bias;
+  static constexpr U field_of(int binade) { return U(bias + binade) << significand_bits; }
+
+  // band = (field + index_offset) >> band_bits, with field - bias the binade of a normal phi
+  static constexpr int index_offset = -bias - bands::least_binade;
+  static_assert(index_offset >= 0);
+  static_assert(((int(std::bit_cast<U>(std::numeric_limits<T>::infinity()) >> significand_bits) + index_offset) >>
+                 bands::band_bits) < bands::count,
+                "any phi without its sign bit indexes the table; the phi test below refuses the bands that hold nothing");
+
+  // A subnormal phi's field (0) reads as binade -bias, which names the band of
+  // every subnormal binade only if they all share a band: in double they do,
+  // in float they straddle two, and subnormal phi goes to the scalar path.
+  static constexpr bool subnormal_phi_in_one_band = ((-bias - bands::least_binade) >> bands::band_bits) == 0;
+  static constexpr U phi_least = subnormal_phi_in_one_band ? U(1) : smallest_normal_bits<T>;
+  // phi from the first band that holds nothing up (2^974 in double, 2^123 in float)
+  static constexpr int first_empty_band = [] {
+    int j = 0;
+    while (j < bands::count && bands::table[j].lowest < bands::overflow_binade) ++j;
+    return j;
+  }();
+  static_assert(first_empty_band < bands::count, "the last bands hold nothing: 2 (1 + phi) overflows");
+  static constexpr U phi_end = field_of(bands::least_binade + (first_empty_band << bands::band_bits));
+
+  static constexpr std::array<U, bands::count> top_binade = [] {  // bits(2^(top-1))
+    std::array<U, bands::count> fields{};
+    for (int j = 0; j < first_empty_band; ++j) fields[j] = field_of(bands::table[j].top - 1);
+    return fields;
+  }();
+  static constexpr std::array<U, bands::count> room = [] {
+    std::array<U, bands::count> rooms{};
+    for (int j = 0; j < first_empty_band; ++j)
+      rooms[j] = U(bands::table[j].top - 1 - bands::table[j].lowest) << significand_bits;
+    return rooms;
+  }();
+};
+
+// The shift (to add to the bit patterns of u and dy) by phi's band; `fits` is
+// all ones where the lane may take it: u and dy normal, phi > 0 in a band that
+// holds something, and the binades of |u| and |dy| within the band's room.
+// The table lookups are gathers (or a load per lane), never a branch.
+template <class T>
+CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bits, bits_t<T> phi_bits, bits_t<T>& fits) {
+  using U = bits_t<T>;
+  using moves = band_moves<T>;
+  const U abs_u = u_bits & ~sign_mask<T>, abs_dy = dy_bits & ~sign_mask<T>;
+  const U larger_binade = (abs_u > abs_dy ? abs_u : abs_dy) & ~significand_mask<T>;
+  const U smaller_binade = (abs_u > abs_dy ? abs_dy : abs_u) & ~significand_mask<T>;
+  const U band =
+      U(((phi_bits & ~sign_mask<T>) >> moves::significand_bits) + moves::index_offset) >> detail::phi_bands<T>::band_bits;
+  const U phi_in_a_band = mask<T>(U(phi_bits - moves::phi_least) < U(moves::phi_end - moves::phi_least));
+  fits = both_normal<T>(u_bits, dy_bits) & phi_in_a_band & mask<T>(U(larger_binade - smaller_binade) <= moves::room[band]);
+  return U(moves::top_binade[band] - larger_binade);
+}
+
+// s moved back by the shift: exact where s is 0 or normal both before and
+// after the move; `normal` is all ones there, else zero. The band boxes bound
+// the intermediates, not s: a subnormal s rounded where scaled<T> would not
+// (and an infinite one has no exponent to move), so, as in solve_stable, the
+// scalar path rounds those once.
 template <class T>
 CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
   using U = bits_t<T>;
   const U s_bits = std::bit_cast<U>(s);
   const U abs_s = s_bits & ~sign_mask<T>;
   const U is_zero = mask<T>(abs_s == 0);
-  normal = mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>) | is_zero;
+  normal = (mask<T>(U(abs_s - smallest_normal_bits<T>) < normal_span<T>) &
+            mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>)) |
+           is_zero;
   return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
+}
+
+// A subnormal phi (double only: float's subnormal phi stays on the scalar
+// path) as an operand of a product costs a microcode assist on many cores,
+// about as much as the rest of the rescaled pass. Its products with dy are
+// formed as (phi 2^64) (dy 2^-64) instead: phi 2^64 is normal and exact (its
+// bits, an integer below 2^52, convert exactly), and dy 2^-64 too, as phi's
+// band (the first) has |dy| >= 2^lowest = 2^104 there.
+template <class T>
+CONTACT_BATCH_INLINE std::array<T, 2> product_factors(T phi, T dy) {
+  if constexpr (band_moves<T>::subnormal_phi_in_one_band) {
+    using U = bits_t<T>;
+    constexpr T two_to_k = T(0x1p64);
+    static_assert(detail::phi_bands<T>::table[0].lowest - 64 >= std::numeric_limits<T>::min_exponent);
+    constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * two_to_k;  // a phi bit, times 2^64
+    const U phi_bits = std::bit_cast<U>(phi);
+    const U subnormal = mask<T>(U(phi_bits - 1) < U(smallest_normal_bits<T> - 1));
+    const T phi_up = T(std::make_signed_t<U>(phi_bits)) * least_subnormal_up;
+    return {pick(subnormal, phi_up, phi), pick(subnormal, T(dy / two_to_k), dy)};
+  } else {
+    return {phi, dy};
+  }
 }
 
 // One lane of the branch-free path. Returns all ones if s and which are
 // solve_stable's, and zero if the lane must be redone by the scalar path: it
-// lies outside the vector window, or (A.21)'s exact sum is so close to 0 that
-// the filter below cannot tell its sign.
-// With `rescaled`, u and dy first move into the window (and s back).
+// lies outside the vector window (with `rescaled`: u and dy cannot move into
+// phi's band box, or s cannot move back), or (A.21)'s exact sum is so close
+// to 0 that the filter below cannot tell its sign.
+// With `rescaled`, u and dy first move by phi's band, and s back at the end.
 template <bool rescaled, class T>
 CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
   using U = bits_t<T>;
   const U u_bits = std::bit_cast<U>(u_in), dy_bits = std::bit_cast<U>(dy_in);
-  const U shift = rescaled ? rescaling<T>(u_bits, dy_bits) : U(0);
+  U inside, shift = 0;  // inside: the plain formulas are safe on the lane's (moved) operands
+  if constexpr (rescaled) shift = band_rescaling<T>(u_bits, dy_bits, std::bit_cast<U>(phi), inside);
   const T u = std::bit_cast<T>(U(u_bits + shift)), dy = std::bit_cast<T>(U(dy_bits + shift));
-  U inside = inside_window(std::fabs(u), std::fabs(dy), phi);
-  if constexpr (rescaled) inside &= both_normal<T>(u_bits, dy_bits);
+  if constexpr (!rescaled) inside = inside_window(std::fabs(u), std::fabs(dy), phi);
   const U no_contact_before = mask<T>(dy <= 0);
+  // phi's two products with dy, phi |dy| and phi (2 dy), as phi_factor times
+  // dy_factor: the same exact products, so the same roundings.
+  const auto [phi_factor, dy_factor] = rescaled ? product_factors(phi, dy) : std::array<T, 2>{phi, dy};
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
   // discriminant u^2 + 4 (phi gap) (u - gap), (A.32) release has
@@ -187,22 +276,27 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   // lane's own operands. gap = -dy = |dy| on the lanes of (A.30), so phi gap
   // and phi dy are both phi |dy|, and u - gap is the same sum as u + dy.
   const T a = u + dy;
-  const T x = phi * std::fabs(dy);                       // impact: push = phi gap; release: phi dy
+  const T x = phi_factor * std::fabs(dy_factor);         // impact: push = phi gap; release: phi dy
   const T z = x * pick(no_contact_before, a, dy);        // impact: push (u - gap); release: phi dy^2
   const T root = std::sqrt(std::fma(u, u, T(4) * z));
 
   // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
   // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
-  // 2^-p (|a| + |b| + phi dy) (p = precision; no underflow inside the window),
-  // so |b| > 2^(3-p) (|a| + phi dy) gives its sign. The rare lanes it cannot
-  // decide go to the scalar path, whose exact expansion decides them.
+  // 2^-p (|a| + |b| + phi dy) (p = precision), so |b| > 2^(3-p) (|a| + phi dy)
+  // gives its sign. The rare lanes it cannot decide go to the scalar path,
+  // whose exact expansion decides them. The bound needs phi dy and the bound
+  // itself normal (sums round relatively even when subnormal). Inside the
+  // vector window they are. On the rescaled path phi's band has
+  // dy >= 2^lowest >= 2^(emin - Pe + 2p - 2) (phi_bands::of; phi >= 2^P,
+  // Pe = max(P, emin)), so phi dy >= 2^(emin + p - 1) (P >= emin - p + 1 when
+  // P < emin) and the bound >= 2^(emin + 2).
   const T b = a - x;  // on dy > 0 lanes, x = phi dy >= 0
   constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
   const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + x) * filter);
 
   // The case masks, each from its own comparison (no ~ on masks: fewer
   // instructions). u <= gap is a <= 0: u + dy rounds to a number of its sign
-  // (inside the window no sum is small enough to round to 0).
+  // (a sum is exact where it is subnormal, so it rounds to 0 only if it is 0).
   const U contact_before = mask<T>(dy > 0);
   const U is_free = no_contact_before & mask<T>(a <= 0);
   const U is_impact = no_contact_before & mask<T>(!(a <= 0));
@@ -214,7 +308,7 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T one_plus_phi = T(1) + phi;
   T numerator = pick(rationalised, T(T(2) * z), T(root - u));  // release
   T denominator = pick(rationalised, T(u + root), T(2));
-  numerator = pick(is_contact, std::fma(phi, T(2) * dy, -u), numerator);
+  numerator = pick(is_contact, std::fma(phi_factor, T(2) * dy_factor, -u), numerator);
   denominator = pick(is_contact, one_plus_phi, denominator);
   numerator = pick(is_impact, T(-((u + T(2) * x) + root)), numerator);
   denominator = pick(is_impact, T(T(2) * one_plus_phi), denominator);
@@ -287,25 +381,43 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
 
 #if defined(__AVX512F__)
 // The lanes i .. i + 7 that solve_lanes_avx512 left unsolved (bits of `solved`
-// clear): lane<true> on all eight (vectorised, the rescaling of out-of-window
-// lanes), then the scalar path for those it cannot answer either.
-[[gnu::noinline]] inline void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
-                                                   const double* __restrict phi, double* __restrict s,
-                                                   int* __restrict which, std::ptrdiff_t i, unsigned solved) {
-  double rescaled_s[8];
-  std::int64_t rescaled_case[8];
-  std::uint64_t rescaled_solved[8];
+// clear): lane<true> on all eight (vectorised: phi's band moves out-of-window
+// lanes), then the scalar path for those it cannot answer either. Which lanes
+// the first pass left and which this one answers varies from vector to vector
+// without a pattern, so the answers are merged with masked stores rather than
+// a branch per lane (mispredicted branches cost more than the pass itself).
+CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
+                                               const double* __restrict phi, double* __restrict s,
+                                               int* __restrict which, std::ptrdiff_t i, unsigned solved) {
+  alignas(64) double rescaled_s[8];
+  alignas(64) std::int64_t rescaled_case[8];
+  alignas(64) std::uint64_t rescaled_solved[8];
   for (int k = 0; k < 8; ++k)
     rescaled_solved[k] = lane<true>(u[i + k], dy[i + k], phi[i + k], rescaled_s[k], rescaled_case[k]);
-  for (int k = 0; k < 8; ++k) {
-    if ((solved >> k) & 1) continue;
-    if (rescaled_solved[k]) {
-      s[i + k] = rescaled_s[k];
-      which[i + k] = static_cast<int>(rescaled_case[k]);
-    } else {
-      solve_scalar_lane(u, dy, phi, s, which, i + k);
-    }
-  }
+  const __m512i answers = _mm512_load_si512(rescaled_solved);
+  const __mmask8 answered = _mm512_test_epi64_mask(answers, answers);
+  const __mmask8 taken = answered & ~__mmask8(solved);
+  _mm512_mask_storeu_pd(s + i, taken, _mm512_load_pd(rescaled_s));
+  _mm256_mask_storeu_epi32(which + i, taken, _mm512_cvtepi64_epi32(_mm512_load_si512(rescaled_case)));
+  for (unsigned left = ~(solved | answered) & 0xFFu; left != 0; left &= left - 1)
+    solve_scalar_lane(u, dy, phi, s, which, i + std::countr_zero(left));
+}
+
+// The vectors that solve_lanes_avx512 left partly unsolved, collected so that
+// their rescaled passes run one after the other: they are independent, and
+// out-of-order execution overlaps one's square root and division with the
+// next one's (one pass at a time after each vector waits for them in turn).
+struct unsolved_vectors {
+  static constexpr int capacity = 32;
+  std::ptrdiff_t start[capacity];
+  unsigned solved[capacity];
+  int count = 0;
+};
+
+[[gnu::noinline]] inline void solve_rescaled(const double* __restrict u, const double* __restrict dy,
+                                             const double* __restrict phi, double* __restrict s, int* __restrict which,
+                                             const unsolved_vectors& vectors) {
+  for (int v = 0; v < vectors.count; ++v) solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.solved[v]);
 }
 
 // The same lanes with AVX-512 written out, for double: the operations of lane()
@@ -325,6 +437,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
   const __m512d sign_bit = _mm512_set1_pd(-0.0);
   const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
   const __m512i lowest = _mm512_set1_epi64(std::int64_t(window_lowest<double>));  // inside_window()'s test
+  const __m512d window_least = _mm512_castsi512_pd(lowest);                           // 2^-E
   const __m512i width = _mm512_set1_epi64(std::int64_t(window_width<double>));
   const __m512i one_bit = _mm512_set1_epi64(1);
   const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
@@ -339,7 +452,14 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     up_to_root l;
     l.u = _mm512_loadu_pd(u_in + j);
     l.dy = _mm512_loadu_pd(dy_in + j);
-    l.phi = _mm512_loadu_pd(phi_in + j);
+    const __m512d phi = _mm512_loadu_pd(phi_in + j);
+    // A lane with phi below the window is answered again later; 2^-E in place
+    // of its phi keeps a subnormal phi out of this pass's products (a
+    // subnormal operand costs a microcode assist on many cores, about as much
+    // as the rest of the 8 lanes together). max is one instruction, where a
+    // compare and a blend cost the physical lanes 8%; it also turns a NaN or
+    // negative phi into 2^-E, whose lanes fail `inside` all the same.
+    l.phi = _mm512_max_pd(phi, window_least);
     l.abs_dy = _mm512_andnot_pd(sign_bit, l.dy);
     l.no_contact_before = _mm512_cmp_pd_mask(l.dy, zero, _CMP_LE_OQ);
     l.a = _mm512_add_pd(l.u, l.dy);
@@ -350,15 +470,16 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
   };
   up_to_root next{};
   if (n >= 8) next = start(0);
+  unsolved_vectors unsolved;
   for (; i + 8 <= n; i += 8) {
     const up_to_root l = next;
     if (i + 16 <= n) next = start(i + 8);
     const __m512d u = l.u, dy = l.dy, phi = l.phi, abs_dy = l.abs_dy, a = l.a, x = l.x, z = l.z, root = l.root;
     const __mmask8 no_contact_before = l.no_contact_before;
-    const __m512d abs_u = _mm512_andnot_pd(sign_bit, u);
+    const __m512d abs_u = _mm512_andnot_pd(sign_bit, u), raw_phi = _mm512_loadu_pd(phi_in + i);
     const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_castpd_si512(abs_u), lowest),
                                                      _mm512_sub_epi64(_mm512_castpd_si512(abs_dy), lowest),
-                                                     _mm512_sub_epi64(_mm512_castpd_si512(phi), lowest), 0xFE);
+                                                     _mm512_sub_epi64(_mm512_castpd_si512(raw_phi), lowest), 0xFE);
     const __mmask8 inside = _mm512_cmplt_epu64_mask(spread, width);
     const __mmask8 contact_before = _mm512_cmp_pd_mask(dy, zero, _CMP_GT_OQ);
     const __m512d b = _mm512_sub_pd(a, x);
@@ -393,9 +514,17 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i),
                         _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case));
     const __mmask8 solved = inside & (no_contact_before | decided);
-    if (solved != 0xFF) [[unlikely]]  // out of line: the hot loop stays short
-      solve_eight_rescaled(u_in, dy_in, phi_in, s_out, which_out, i, solved);
+    // noted without a branch (where out-of-window lanes are common, whether a
+    // vector holds one is a coin toss); solved out of line, the hot loop stays short
+    unsolved.start[unsolved.count] = i;
+    unsolved.solved[unsolved.count] = solved;
+    unsolved.count += solved != 0xFF;
+    if (unsolved.count == unsolved_vectors::capacity) [[unlikely]] {
+      solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);
+      unsolved.count = 0;
+    }
   }
+  if (unsolved.count != 0) solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);
   for (; i < n; ++i) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i);  // the last n mod 8 lanes
 }
 #endif
