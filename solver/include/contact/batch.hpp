@@ -83,37 +83,14 @@ CONTACT_BATCH_INLINE T pick(bits_t<T> m, T a, T b) {
   return std::bit_cast<T>(U((std::bit_cast<U>(a) & m) | (std::bit_cast<U>(b) & ~m)));
 }
 
-// The lane can take the branch-free path: u, dy and phi are normal numbers
-// with exponents in [-E, E), E = vector_window<T>, and phi > 0. That is inside
-// detail::safe_window<T> (whose half-width is at least E), so the scalar path
-// runs the same plain-T operations on these lanes; NaN, infinity, zero, phi < 0
-// and the extreme magnitudes all go to the scalar fix-up. The test reads bit
-// patterns, which order non-negative numbers as their values: |x| lies in
-// [2^-E, 2^E) iff bits(|x|) - bits(2^-E) < 2E binades of significands,
-// unsigned, and as 2E is a power of two, all three hold iff their bitwise OR
-// does. phi's sign bit makes a negative phi fail.
-template <class T>
-inline constexpr int vector_window = std::is_same_v<T, double> ? 128 : 16;
-
-template <class T>
-inline constexpr bits_t<T> window_lowest =  // bits(2^-E)
-    bits_t<T>(detail::binary_layout<T>::bias - vector_window<T>) << detail::binary_layout<T>::significand_bits;
-
-template <class T>
-inline constexpr bits_t<T> window_width = bits_t<T>(2 * vector_window<T>) << detail::binary_layout<T>::significand_bits;
-
+// The lane can take the branch-free path: u, dy and phi lie in the common
+// window (|x| in [2^-E, 2^E), E = detail::common_window<T>, normal, phi > 0), inside detail::safe_window<T>, so the scalar path runs the
+// same plain-T operations on these lanes; NaN, infinity, zero, phi < 0 and the
+// extreme magnitudes all go to the rescaled pass and the scalar fix-up.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> inside_window(T abs_u, T abs_dy, T phi) {
-  using U = bits_t<T>;
-  const U spread = U(std::bit_cast<U>(abs_u) - window_lowest<T>) | U(std::bit_cast<U>(abs_dy) - window_lowest<T>) |
-                   U(std::bit_cast<U>(phi) - window_lowest<T>);
-  return mask<T>(spread < window_width<T>);
+  return mask<T>(detail::common_window_offsets(abs_u, abs_dy, phi) < detail::common_window_width<T>);
 }
-static_assert(std::has_single_bit(unsigned(2 * vector_window<double>)) &&
-                  std::has_single_bit(unsigned(2 * vector_window<float>)),
-              "one test of the OR");
-static_assert(vector_window<double> <= detail::plain_window<double> && vector_window<float> <= detail::plain_window<float>,
-              "inside safe_window's half-width");
 
 // Out-of-window lanes: (A.2) is homogeneous in (u, dy), so u and dy may move
 // by one power of two and s back at the end, as solve_stable does outside its
@@ -436,9 +413,9 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
                 four = _mm512_set1_pd(4.0), minus_two = _mm512_set1_pd(-2.0);
   const __m512d sign_bit = _mm512_set1_pd(-0.0);
   const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
-  const __m512i lowest = _mm512_set1_epi64(std::int64_t(window_lowest<double>));  // inside_window()'s test
+  const __m512i lowest = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest<double>));  // inside_window()'s test
   const __m512d window_least = _mm512_castsi512_pd(lowest);                           // 2^-E
-  const __m512i width = _mm512_set1_epi64(std::int64_t(window_width<double>));
+  const __m512i width = _mm512_set1_epi64(std::int64_t(detail::common_window_width<double>));
   const __m512i one_bit = _mm512_set1_epi64(1);
   const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
                 case_release = _mm256_set1_epi32(int(contact_case::release)), one_case = _mm256_set1_epi32(1);

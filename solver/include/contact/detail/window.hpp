@@ -1,7 +1,9 @@
 // The plain window: the exponent range inside which plain T arithmetic cannot
 // overflow or underflow in any stable formula. stable.hpp takes its plain path
-// inside it and scaled<T> outside; batch.hpp's vector window lies inside it; the
-// fuzzers fold inputs into it; docs/equations.md states the bound.
+// inside it (and the phi bands' rescaled route outside it) and scaled<T> where
+// neither serves; the common window (below), the first test of the stable path
+// and of the batch kernels, lies inside it; the fuzzers fold inputs into it;
+// docs/equations.md states the bound.
 #pragma once
 
 #include <algorithm>
@@ -155,28 +157,46 @@ bool inside_plain_window(const T& u, const T& dy, const T& phi) {
          !std::signbit(phi);
 }
 
-// The stable path's first test, for binary32 and binary64: |u|, |dy| and
-// phi normal, phi > 0, and all three in [2^-C, 2^C), C = 128 (double) or 16
-// (float), inside the plain window. 2C binades is a power of two, so the
-// three offsets from 2^-C lie below 2^(2C) binades of bit patterns iff their
-// bitwise OR does: one comparison. Physical inputs lie well inside; the rest
-// of the plain window takes the band route, whose plain path gives the same s.
+// The common window, for binary32 and binary64: |u|, |dy| and phi normal,
+// phi > 0, and all three in [2^-C, 2^C), C = 128 (double) or 16 (float),
+// inside the plain window. The stable path's first test and the batch
+// kernels' lane test. Bit patterns of non-negative numbers order as their
+// values and 2C binades is a power of two, so the three offsets from 2^-C lie
+// below 2^(2C) binades of bit patterns iff their bitwise OR does: one
+// comparison; phi's sign bit makes a negative phi fail. Physical inputs lie
+// well inside; the rest of the plain window takes the band route, whose plain
+// path gives the same s.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 inline constexpr int common_window = std::is_same_v<T, double> ? 128 : 16;
 static_assert(common_window<double> <= plain_window<double> && common_window<float> <= plain_window<float>);
+static_assert(std::has_single_bit(unsigned(2 * common_window<double>)) &&
+                  std::has_single_bit(unsigned(2 * common_window<float>)),
+              "one comparison of the OR");
+
+template <class T>
+inline constexpr typename binary_layout<T>::bits common_window_lowest =  // bits(2^-C)
+    typename binary_layout<T>::bits(binary_layout<T>::bias - common_window<T>) << binary_layout<T>::significand_bits;
+
+template <class T>
+inline constexpr typename binary_layout<T>::bits common_window_width =  // 2C binades of bit patterns
+    typename binary_layout<T>::bits(2 * common_window<T>) << binary_layout<T>::significand_bits;
+
+// The OR of the three offsets; the input lies in the window iff it is below common_window_width.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+inline typename binary_layout<T>::bits common_window_offsets(const T& abs_u, const T& abs_dy, const T& phi) {
+  using bits = typename binary_layout<T>::bits;
+  constexpr bits lowest = common_window_lowest<T>;
+  return bits(std::bit_cast<bits>(abs_u) - lowest) | bits(std::bit_cast<bits>(abs_dy) - lowest) |
+         bits(std::bit_cast<bits>(phi) - lowest);
+}
 
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 bool inside_common_window(const T& u, const T& dy, const T& phi) {
-  using layout = binary_layout<T>;
-  using bits = typename layout::bits;
-  constexpr bits lowest = bits(layout::bias - common_window<T>) << layout::significand_bits;  // bits(2^-C)
-  constexpr bits width = bits(2 * common_window<T>) << layout::significand_bits;
-  static_assert(std::has_single_bit(unsigned(2 * common_window<T>)), "one comparison of the OR");
-  const bits offsets = bits((std::bit_cast<bits>(u) & ~layout::sign) - lowest) |
-                       bits((std::bit_cast<bits>(dy) & ~layout::sign) - lowest) | bits(std::bit_cast<bits>(phi) - lowest);
-  return offsets < width;
+  using std::fabs;
+  return common_window_offsets(fabs(u), fabs(dy), phi) < common_window_width<T>;
 }
 
 }  // namespace contact::detail
