@@ -135,7 +135,6 @@ struct band_moves {
   using bands = detail::phi_bands<T>;
   static constexpr int significand_bits = detail::binary_layout<T>::significand_bits;
   static constexpr int bias = detail::binary_layout<T>::bias;
-  static constexpr U field_of(int binade) { return U(bias + binade) << significand_bits; }
 
   // band = (field + index_offset) >> band_bits, with field - bias the binade of a normal phi
   static constexpr int index_offset = -bias - bands::least_binade;
@@ -156,11 +155,11 @@ struct band_moves {
     return j;
   }();
   static_assert(first_empty_band < bands::count, "the last bands hold nothing: 2 (1 + phi) overflows");
-  static constexpr U phi_end = field_of(bands::least_binade + (first_empty_band << bands::band_bits));
+  static constexpr U phi_end = U(bias + bands::least_binade + (first_empty_band << bands::band_bits)) << significand_bits;
 
   static constexpr std::array<U, bands::count> top_binade = [] {  // bits(2^(top-1))
     std::array<U, bands::count> fields{};
-    for (int j = 0; j < first_empty_band; ++j) fields[j] = field_of(bands::table[j].top - 1);
+    for (int j = 0; j < first_empty_band; ++j) fields[j] = U(bias + bands::table[j].top - 1) << significand_bits;
     return fields;
   }();
   static constexpr std::array<U, bands::count> room = [] {

@@ -117,7 +117,6 @@ struct phi_bands {
   static constexpr int count = ((overflow_binade - 1 - least_binade) >> band_bits) + 1;
 
   static constexpr int ceil_half(int x) { return x >= 0 ? (x + 1) / 2 : -(-x / 2); }
-  static constexpr int floor_half(int x) { return x >= 0 ? x / 2 : -((-x + 1) / 2); }
 
   // phi in [2^P, 2^(Q+1)), |u|, |dy| < 2^top; the bounds of docs/equations.md, section 6.
   static constexpr band of(int P, int Q) {
@@ -125,7 +124,8 @@ struct phi_bands {
     // 2 (1 + phi) must stay finite whatever u and dy are: the band holds nothing
     if (Q + 3 >= overflow_binade) return {0, overflow_binade};
     // the largest intermediates, below 2^(2 top + max(Q + 3, 0) + 1): the discriminants
-    const int top = floor_half(overflow_binade - 1 - std::max(Q + 3, 0));
+    // (non-negative: Q + 3 < overflow_binade here, so / 2 is the floor)
+    const int top = (overflow_binade - 1 - std::max(Q + 3, 0)) / 2;
     // a non-zero phi is a multiple of 2^(Pe - p + 1), a non-zero u or dy of 2^(b - p + 1)
     const int Pe = std::max(P, emin);
     const int lowest = std::max({ceil_half(emin - P + p - 1),  // push (u - gap) >= 2^(P + 2b - p + 1)
