@@ -224,15 +224,18 @@ bool inside_a_band_box(T u, T dy, T phi) {
 // solve_stable does; and it answers most of those whose phi lies outside the
 // vector window and whose s is normal (the rest: the pre-test's undecided
 // lanes, and s subnormal before it moves back), the band's room included.
+
 template <class T>
 void expect_band_lanes_solved_in_vector_code(const lanes<T>& in) {
   using case_number = std::make_signed_t<contact::batch_detail::bits_t<T>>;
   long eligible = 0, solved = 0, solved_at_room = 0, mismatches = 0, outside_boxes = 0;
+
   for (std::size_t i = 0; i < in.u.size(); ++i) {
     const T u = in.u[i], dy = in.dy[i], phi = in.phi[i];
     T s;
     case_number which;
-    const bool lane_solved = contact::batch_detail::lane<true>(u, dy, phi, s, which) != 0;
+    contact::batch_detail::bits_t<T> undecided;
+    const bool lane_solved = contact::batch_detail::lane<true>(u, dy, phi, s, which, undecided) != 0;
     const auto scalar = contact::solve_stable(u, dy, phi);
     const bool box = inside_a_band_box(u, dy, phi);
     if (lane_solved && (!identical(scalar.s, s) || static_cast<int>(scalar.which) != static_cast<int>(which))) {
@@ -259,6 +262,52 @@ void expect_band_lanes_solved_in_vector_code(const lanes<T>& in) {
   EXPECT_GT(eligible, 1000);
   EXPECT_GT(solved, eligible * 9 / 10) << "of " << eligible;
   EXPECT_GT(solved_at_room, 50);
+}
+
+// With the exact decision, lane<true, true> answers every lane lane<true>
+// answers, the same way, and the lanes lane<true> leaves undecided near the
+// contact/release boundary, as solve_stable does.
+template <class T>
+void expect_exact_decision_answers_undecided_lanes(const lanes<T>& in) {
+  using case_number = std::make_signed_t<contact::batch_detail::bits_t<T>>;
+  long undecided_lanes = 0, wrong = 0;
+  for (std::size_t i = 0; i < in.u.size(); ++i) {
+    const T u = in.u[i], dy = in.dy[i], phi = in.phi[i];
+    T s, s_exact;
+    case_number which, which_exact;
+    contact::batch_detail::bits_t<T> undecided, undecided_after_exact;
+    const bool solved = contact::batch_detail::lane<true>(u, dy, phi, s, which, undecided) != 0;
+    const bool exact_solved =
+        contact::batch_detail::lane<true, true>(u, dy, phi, s_exact, which_exact, undecided_after_exact) != 0;
+    const auto scalar = contact::solve_stable(u, dy, phi);
+    undecided_lanes += undecided != 0;
+    const bool same = identical(scalar.s, s_exact) && static_cast<int>(scalar.which) == static_cast<int>(which_exact);
+    if (exact_solved != (solved || undecided != 0) || (exact_solved && !same)) {
+      if (++wrong <= 10)
+        ADD_FAILURE() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi << ": exact lane s=" << s_exact
+                      << " case " << which_exact << " (solved " << exact_solved << "), scalar s=" << scalar.s;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(undecided_lanes, in.u.size() / 20) << "of " << in.u.size();
+}
+
+TEST(Batch, ExactDecisionAnswersTheLanesNearTheContactBoundary) {
+  for (std::uint64_t seed : {31, 32}) {
+    harness::seeded_source source(seed);
+    using harness::distribution;
+    const distribution dy_wide{distribution::shape::log10, -10, 2, 1}, phi_wide{distribution::shape::log10, -3, 12, 1};
+    lanes<double> near_double;
+    lanes<float> near_float;
+    for (int i = 0; i < 20000; ++i) {
+      const auto x = harness::contact_release_boundary<double>(source, dy_wide, phi_wide, 4);
+      near_double.add(x.u, x.dy, x.phi);
+      const auto y = harness::contact_release_boundary<float>(source, dy_wide, phi_wide, 4);
+      near_float.add(y.u, y.dy, y.phi);
+    }
+    expect_exact_decision_answers_undecided_lanes(near_double);
+    expect_exact_decision_answers_undecided_lanes(near_float);
+  }
 }
 
 TEST(Batch, RescaledLanesTakePhiBandsAsSolveStableDoes) {

@@ -110,18 +110,9 @@ template <class T>
 inline constexpr bits_t<T> sign_mask = detail::binary_layout<T>::sign;
 
 template <class T>
-inline constexpr bits_t<T> smallest_normal_bits = bits_t<T>(1) << detail::binary_layout<T>::significand_bits;
-
-template <class T>
-inline constexpr bits_t<T> normal_span = std::bit_cast<bits_t<T>>(std::numeric_limits<T>::infinity()) - smallest_normal_bits<T>;
-
-// |u| and |dy| normal: bits(|x|) - bits(least normal) < bits(inf) - bits(least normal), unsigned.
-template <class T>
 CONTACT_BATCH_INLINE bits_t<T> both_normal(bits_t<T> u_bits, bits_t<T> dy_bits) {
-  using U = bits_t<T>;
-  const U u_offset = U((u_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
-  const U dy_offset = U((dy_bits & ~sign_mask<T>) - smallest_normal_bits<T>);
-  return mask<T>(u_offset < normal_span<T>) & mask<T>(dy_offset < normal_span<T>);
+  using layout = detail::binary_layout<T>;
+  return mask<T>(layout::is_normal(u_bits & ~sign_mask<T>)) & mask<T>(layout::is_normal(dy_bits & ~sign_mask<T>));
 }
 
 // phi_bands<T>' table in the units the lane works in: the band's index read
@@ -147,7 +138,7 @@ struct band_moves {
   // every subnormal binade only if they all share a band: in double they do,
   // in float they straddle two, and subnormal phi goes to the scalar path.
   static constexpr bool subnormal_phi_in_one_band = ((-bias - bands::least_binade) >> bands::band_bits) == 0;
-  static constexpr U phi_least = subnormal_phi_in_one_band ? U(1) : smallest_normal_bits<T>;
+  static constexpr U phi_least = subnormal_phi_in_one_band ? U(1) : detail::binary_layout<T>::least_normal;
   // phi from the first band that holds nothing up (2^974 in double, 2^123 in float)
   static constexpr int first_empty_band = [] {
     int j = 0;
@@ -199,9 +190,8 @@ CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
   const U s_bits = std::bit_cast<U>(s);
   const U abs_s = s_bits & ~sign_mask<T>;
   const U is_zero = mask<T>(abs_s == 0);
-  normal = (mask<T>(U(abs_s - smallest_normal_bits<T>) < normal_span<T>) &
-            mask<T>(U(abs_s - shift - smallest_normal_bits<T>) < normal_span<T>)) |
-           is_zero;
+  using layout = detail::binary_layout<T>;
+  normal = (mask<T>(layout::is_normal(abs_s)) & mask<T>(layout::is_normal(U(abs_s - shift)))) | is_zero;
   return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
 }
 
@@ -219,7 +209,7 @@ CONTACT_BATCH_INLINE std::array<T, 2> product_factors(T phi, T dy) {
     static_assert(detail::phi_bands<T>::table[0].lowest - 64 >= std::numeric_limits<T>::min_exponent);
     constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * two_to_k;  // a phi bit, times 2^64
     const U phi_bits = std::bit_cast<U>(phi);
-    const U subnormal = mask<T>(U(phi_bits - 1) < U(smallest_normal_bits<T> - 1));
+    const U subnormal = mask<T>(U(phi_bits - 1) < U(detail::binary_layout<T>::least_normal - 1));
     const T phi_up = T(std::make_signed_t<U>(phi_bits)) * least_subnormal_up;
     return {pick(subnormal, phi_up, phi), pick(subnormal, T(dy / two_to_k), dy)};
   } else {
@@ -228,13 +218,15 @@ CONTACT_BATCH_INLINE std::array<T, 2> product_factors(T phi, T dy) {
 }
 
 // One lane of the branch-free path. Returns all ones if s and which are
-// solve_stable's, and zero if the lane must be redone by the scalar path: it
-// lies outside the vector window (with `rescaled`: u and dy cannot move into
-// phi's band box, or s cannot move back), or (A.21)'s exact sum is so close
-// to 0 that the filter below cannot tell its sign.
+// solve_stable's, and zero if the lane must be redone: it lies outside the
+// vector window (with `rescaled`: u and dy cannot move into phi's band box, or
+// s cannot move back), or, without `exact_decision`, (A.21)'s exact sum is so
+// close to 0 that the filter below cannot tell its sign; those lanes, and only
+// those, are also marked `undecided`, for a pass with `exact_decision`.
 // With `rescaled`, u and dy first move by phi's band, and s back at the end.
-template <bool rescaled, class T>
-CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out) {
+template <bool rescaled, bool exact_decision = false, class T>
+CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_signed_t<bits_t<T>>& which_out,
+                                    bits_t<T>& undecided) {
   using U = bits_t<T>;
   const U u_bits = std::bit_cast<U>(u_in), dy_bits = std::bit_cast<U>(dy_in);
   U inside, shift = 0;  // inside: the plain formulas are safe on the lane's (moved) operands
@@ -259,8 +251,12 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
   // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
   // 2^-p (|a| + |b| + phi dy) (p = precision), so |b| > 2^(3-p) (|a| + phi dy)
-  // gives its sign. The rare lanes it cannot decide go to the scalar path,
-  // whose exact expansion decides them. The bound needs phi dy and the bound
+  // gives its sign. The lanes it cannot decide, near the boundary, fail the
+  // passes without `exact_decision`; a pass with it decides them by the exact
+  // sum, as solve_stable does (phi dy as two_prod's exact pair; in the window
+  // and the phi bands neither its low part nor a partial sum under- or
+  // overflows, proofs/gappa/window/pretest.g.in). It runs only on blocks
+  // that need it: the exact sum costs about as much as the rest of the lane. The bound needs phi dy and the bound
   // itself normal (sums round relatively even when subnormal). Inside the
   // vector window they are. On the rescaled path phi's band has
   // dy >= 2^lowest >= 2^(emin - Pe + 2p - 2) (phi_bands::of; phi >= 2^P,
@@ -269,15 +265,21 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T b = a - x;  // on dy > 0 lanes, x = phi dy >= 0
   constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
   const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + x) * filter);
+  U stays = mask<T>(b > 0);
+  if constexpr (exact_decision) {
+    const auto phi_dy = detail::two_prod(phi_factor, dy_factor);
+    const T terms[4] = {u, dy, T(-phi_dy.high), T(-phi_dy.low)};
+    stays = (decided & stays) | (~decided & mask<T>(!(detail::leading_component_of_exact_sum(terms) < 0)));
+  }
 
-  // The case masks, each from its own comparison (no ~ on masks: fewer
-  // instructions). u <= gap is a <= 0: u + dy rounds to a number of its sign
+  // The case masks, each from its own comparison where it can (fewer
+  // instructions than ~ on masks). u <= gap is a <= 0: u + dy rounds to a number of its sign
   // (a sum is exact where it is subnormal, so it rounds to 0 only if it is 0).
   const U contact_before = mask<T>(dy > 0);
   const U is_free = no_contact_before & mask<T>(a <= 0);
   const U is_impact = no_contact_before & mask<T>(!(a <= 0));
-  const U is_contact = contact_before & mask<T>(b > 0);
-  const U is_release = contact_before & mask<T>(!(b > 0));
+  const U is_contact = contact_before & stays;
+  const U is_release = contact_before ^ is_contact;
 
   // One division per lane: numerator and denominator of the lane's case.
   const U rationalised = mask<T>(u > 0);
@@ -307,7 +309,9 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   // the case number 1 + [impact] + 2 [dy > 0] + [release]; a true mask is -1
   using S = std::make_signed_t<U>;
   which_out = S(1) - S(is_impact) - S(2) * S(contact_before) - S(is_release);
-  return inside & s_back_normal & (no_contact_before | decided);
+  const U answerable = inside & s_back_normal;
+  undecided = answerable & contact_before & ~decided;
+  return answerable & (exact_decision ? ~U(0) : (no_contact_before | decided));
 }
 
 // The scalar path for lane i, where the vector path cannot answer.
@@ -318,19 +322,27 @@ void solve_scalar_lane(const T* u, const T* dy, const T* phi, T* s, int* which, 
   which[i] = static_cast<int>(r.which);
 }
 
-// A block with lanes outside the window: every lane again, rescaled (the
-// lanes inside give the same s, by homogeneity, as the plain-T rounding there
-// is that of an unbounded exponent range), and the scalar path for the lanes
-// that even the rescaled pass cannot answer.
+// A block with lanes outside the window or undecided: every lane again,
+// rescaled (the lanes inside give the same s, by homogeneity, as the plain-T
+// rounding there is that of an unbounded exponent range), once more with the
+// exact decision if lanes near the contact boundary are left (a lane solved
+// by two passes gets the same answer from both), and the scalar path for the
+// lanes that even these cannot answer.
 template <class T>
 [[gnu::noinline]] void solve_block_rescaled(const T* __restrict u, const T* __restrict dy, const T* __restrict phi,
                                             T* __restrict s, int* __restrict which, std::ptrdiff_t start,
                                             std::ptrdiff_t count) {
   using case_number = std::make_signed_t<bits_t<T>>;
   case_number cases[block];
-  bits_t<T> solved[block];
-  for (std::ptrdiff_t i = 0; i < count; ++i)
-    solved[i] = lane<true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
+  bits_t<T> solved[block], undecided[block];
+  bits_t<T> any_undecided = 0;
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    solved[i] = lane<true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided[i]);
+    any_undecided |= undecided[i];
+  }
+  if (any_undecided != 0)
+    for (std::ptrdiff_t i = 0; i < count; ++i)
+      solved[i] = lane<true, true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided[i]);
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     which[start + i] = static_cast<int>(cases[i]);
     if (!solved[i]) solve_scalar_lane(u, dy, phi, s, which, start + i);
@@ -348,34 +360,52 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
   for (std::ptrdiff_t start = 0; start < n; start += block) {
     const std::ptrdiff_t count = start + block < n ? block : n - start;
     bits_t<T> all_solved = ~bits_t<T>(0);
-    for (std::ptrdiff_t i = 0; i < count; ++i)
-      all_solved &= lane<false>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i]);
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      bits_t<T> undecided;  // the rescaled pass finds them again
+      all_solved &= lane<false>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided);
+    }
     for (std::ptrdiff_t i = 0; i < count; ++i) which[start + i] = static_cast<int>(cases[i]);
     if (all_solved != ~bits_t<T>(0)) [[unlikely]] solve_block_rescaled(u, dy, phi, s, which, start, count);
   }
 }
 
 #if defined(__AVX512F__)
+// One pass of lane<true, exact_decision> over the lanes i .. i + 7 (vectorised),
+// its answers stored for the lanes not yet `solved`; returns the lanes solved
+// now, and in `undecided` those left for the exact decision. Which lanes a pass leaves and which the next answers varies from vector
+// to vector without a pattern, so the answers are merged with masked stores
+// rather than a branch per lane (mispredicted branches cost more than the pass).
+template <bool exact_decision>
+CONTACT_BATCH_INLINE __mmask8 merge_eight(const double* __restrict u, const double* __restrict dy,
+                                          const double* __restrict phi, double* __restrict s, int* __restrict which,
+                                          std::ptrdiff_t i, __mmask8 solved, __mmask8& undecided) {
+  alignas(64) double rescaled_s[8];
+  alignas(64) std::int64_t rescaled_case[8];
+  alignas(64) std::uint64_t rescaled_solved[8], rescaled_undecided[8];
+  for (int k = 0; k < 8; ++k)
+    rescaled_solved[k] = lane<true, exact_decision>(u[i + k], dy[i + k], phi[i + k], rescaled_s[k], rescaled_case[k],
+                                                    rescaled_undecided[k]);
+  const __m512i left_undecided = _mm512_load_si512(rescaled_undecided);
+  undecided = _mm512_test_epi64_mask(left_undecided, left_undecided);
+  const __m512i answers = _mm512_load_si512(rescaled_solved);
+  const __mmask8 answered = _mm512_test_epi64_mask(answers, answers);
+  const __mmask8 taken = answered & ~solved;
+  _mm512_mask_storeu_pd(s + i, taken, _mm512_load_pd(rescaled_s));
+  _mm256_mask_storeu_epi32(which + i, taken, _mm512_cvtepi64_epi32(_mm512_load_si512(rescaled_case)));
+  return solved | answered;
+}
+
 // The lanes i .. i + 7 that solve_lanes_avx512 left unsolved (bits of `solved`
-// clear): lane<true> on all eight (vectorised: phi's band moves out-of-window
-// lanes), then the scalar path for those it cannot answer either. Which lanes
-// the first pass left and which this one answers varies from vector to vector
-// without a pattern, so the answers are merged with masked stores rather than
-// a branch per lane (mispredicted branches cost more than the pass itself).
+// clear): lane<true> on all eight (phi's band moves out-of-window lanes), once
+// more with the exact decision if lanes near the contact boundary are left,
+// then the scalar path for those none of these can answer.
 CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
                                                const double* __restrict phi, double* __restrict s,
                                                int* __restrict which, std::ptrdiff_t i, unsigned solved) {
-  alignas(64) double rescaled_s[8];
-  alignas(64) std::int64_t rescaled_case[8];
-  alignas(64) std::uint64_t rescaled_solved[8];
-  for (int k = 0; k < 8; ++k)
-    rescaled_solved[k] = lane<true>(u[i + k], dy[i + k], phi[i + k], rescaled_s[k], rescaled_case[k]);
-  const __m512i answers = _mm512_load_si512(rescaled_solved);
-  const __mmask8 answered = _mm512_test_epi64_mask(answers, answers);
-  const __mmask8 taken = answered & ~__mmask8(solved);
-  _mm512_mask_storeu_pd(s + i, taken, _mm512_load_pd(rescaled_s));
-  _mm256_mask_storeu_epi32(which + i, taken, _mm512_cvtepi64_epi32(_mm512_load_si512(rescaled_case)));
-  for (unsigned left = ~(solved | answered) & 0xFFu; left != 0; left &= left - 1)
+  __mmask8 undecided;
+  __mmask8 done = merge_eight<false>(u, dy, phi, s, which, i, __mmask8(solved), undecided);
+  if (undecided & ~done) done = merge_eight<true>(u, dy, phi, s, which, i, done, undecided);
+  for (unsigned left = ~unsigned(done) & 0xFFu; left != 0; left &= left - 1)
     solve_scalar_lane(u, dy, phi, s, which, i + std::countr_zero(left));
 }
 

@@ -63,11 +63,12 @@ namespace detail {
 // would compute it: when the smaller lies more than p + 1 binades below the
 // larger it is below half an ulp of it, so the rounded sum is the larger and
 // the error the smaller; otherwise the smaller's significand shifts into the
-// larger's frame without loss (its lowest bit stays above 2^(-2p-2)).
-// b != 0: it is a component of a zero-eliminated expansion.
+// larger's frame without loss (its lowest bit stays above 2^(-2p-2)). A zero
+// term gives the other one, exactly (sign_of_exact_sum keeps the zeros of its
+// expansion; one test, as `|`, for either).
 template <class T>
 exact_pair<scaled<T>> two_sum(const scaled<T>& a, const scaled<T>& b) {
-  if (a.significand == 0) return {b, scaled<T>()};
+  if ((a.significand == 0) | (b.significand == 0)) return {a + b, scaled<T>()};
   const bool a_larger = a.exponent >= b.exponent;
   const scaled<T>& large = a_larger ? a : b;
   const scaled<T>& small = a_larger ? b : a;

@@ -84,7 +84,7 @@ template <class T>
 [[gnu::noinline]] bool exact_sum_nonnegative(T u, T dy, T phi) {
   const auto product = two_prod(phi, dy);
   const T terms[4] = {u, dy, -product.high, -product.low};
-  return sign_of_exact_sum(terms) >= 0;
+  return !(leading_component_of_exact_sum(terms) < 0);
 }
 
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
@@ -223,15 +223,13 @@ template <class T>
 [[gnu::noinline]] solution<T> solve_by_phi_band(T u, T dy, T phi) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
-  constexpr bits least_normal = bits(1) << layout::significand_bits;
   constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
-  auto is_normal = [](bits magnitude) { return bits(magnitude - least_normal) < bits(infinite - least_normal); };
   // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
   // for s = -u = 0, a zero of the other sign than plain T's fma gives
   if (!(phi > 0) || !(phi < std::numeric_limits<T>::infinity())) return solve_anywhere(u, dy, phi);
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   int larger, smaller;  // binades of the larger and the smaller non-zero one of |u|, |dy|
-  if (is_normal(u_magnitude) && is_normal(dy_magnitude)) [[likely]] {
+  if (layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude)) [[likely]] {
     // max and min by arithmetic, as a compiler turns std::max into a branch
     // here, and which of u, dy is larger is a coin toss
     const int u_binade = int(u_magnitude >> layout::significand_bits) - layout::bias;
@@ -259,8 +257,8 @@ template <class T>
   // itself is checked too; no test input has made it subnormal, hence one
   // branch for both tests.
   const bits offset = bits(shift) << layout::significand_bits;
-  const bool inside_normal = is_normal(s_magnitude);
-  if (inside_normal & is_normal(bits(s_magnitude - offset))) [[likely]]
+  const bool inside_normal = layout::is_normal(s_magnitude);
+  if (inside_normal & layout::is_normal(bits(s_magnitude - offset))) [[likely]]
     return {std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), inside.which};
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
   // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its

@@ -88,26 +88,40 @@ T fused_multiply_add(const T& a, const T& b, const T& c) {
   }
 }
 
-// Sign (-1, 0, +1) of the exact sum of N numbers, by Shewchuk's grow-expansion:
-// the components stay non-overlapping, so the largest non-zero one has the sign
-// of the whole. Exact while no partial sum overflows.
+// The largest component of the exact sum of N numbers as an expansion, by
+// Shewchuk's grow-expansion: the components stay non-overlapping and in order
+// of increasing magnitude but for zeros among them, so the last non-zero one
+// has the sign of the whole (0 when the sum is 0). Exact while no partial sum
+// overflows. The zeros are kept rather than eliminated: a fixed number of
+// two_sums and selects, without the branches on each error's zero that cost
+// more, near the contact boundary, than they save, and a form the batch
+// kernels vectorise.
 template <class T, int N>
-int sign_of_exact_sum(const T (&terms)[N]) {
+T leading_component_of_exact_sum(const T (&terms)[N]) {
   T expansion[N];
-  int length = 0;
+  // unrolled, so that the batch kernels' loop over lanes has no inner loop
+#pragma GCC unroll 16
   for (int i = 0; i < N; ++i) {
     T carry = terms[i];
-    int kept = 0;
-    for (int j = 0; j < length; ++j) {
+#pragma GCC unroll 16
+    for (int j = 0; j < i; ++j) {
       auto [sum, error] = two_sum(carry, expansion[j]);
+      expansion[j] = error;
       carry = sum;
-      if (error != 0) expansion[kept++] = error;
     }
-    if (carry != 0) expansion[kept++] = carry;
-    length = kept;
+    expansion[i] = carry;
   }
-  if (length == 0) return 0;
-  return expansion[length - 1] > 0 ? 1 : -1;
+  T leading = 0;
+#pragma GCC unroll 16
+  for (int i = 0; i < N; ++i) leading = expansion[i] != 0 ? expansion[i] : leading;
+  return leading;
+}
+
+// Sign (-1, 0, +1) of the exact sum of N numbers.
+template <class T, int N>
+int sign_of_exact_sum(const T (&terms)[N]) {
+  const T leading = leading_component_of_exact_sum(terms);
+  return int(leading > T(0)) - int(T(0) > leading);
 }
 
 // The upper neighbour of a finite x below the largest value, for the types
@@ -199,8 +213,9 @@ T square_root(const T& x) {
 
 // The layout of binary32 and binary64: the unsigned integer of T's width, the
 // sign bit, the significand field's width, the exponent field's all-ones value
-// (unshifted) and the exponent bias. The one place the bit-pattern code of the
-// window, scaled<T>, the batch kernels and the rounded mode reads them from.
+// (unshifted), the exponent bias, and the bits of the least normal value. The
+// one place the bit-pattern code of the window, scaled<T>, the batch kernels
+// and the rounded mode reads them from.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 struct binary_layout {
@@ -209,6 +224,15 @@ struct binary_layout {
   static constexpr int significand_bits = std::numeric_limits<T>::digits - 1;
   static constexpr bits exponent_field = bits(2 * std::numeric_limits<T>::max_exponent - 1);
   static constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+  static constexpr bits least_normal = bits(1) << significand_bits;
+
+  // Whether a magnitude (the bits of |x|) is a normal number, in one unsigned
+  // comparison: zero and subnormals wrap around to the top, infinity and NaN
+  // lie at or beyond the span.
+  static bool is_normal(bits magnitude) {
+    constexpr bits normal_span = bits((exponent_field << significand_bits) - least_normal);
+    return bits(magnitude - least_normal) < normal_span;
+  }
 };
 
 // binary32 and binary64 values as ordered integers (-0 and +0 both map to 0),
