@@ -159,6 +159,12 @@ TEST(Scaled, ShiftsBeyondIntSaturateToInfinityOrZero) {
   EXPECT_EQ(scaled<double>::shifted(-0.5, std::numeric_limits<long>::max()), -inf);
   EXPECT_EQ(scaled<double>::shifted(0.5, std::numeric_limits<long>::min()), 0.0);
   EXPECT_EQ(scaled<double>::shifted(0.5, 3), 4.0);
+  // a subnormal x takes ldexp, with the shift clamped to an int first
+  const double least = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(scaled<double>::shifted(least, std::numeric_limits<long>::max()), inf);
+  EXPECT_EQ(scaled<double>::shifted(-least, std::numeric_limits<long>::min()), -0.0);
+  EXPECT_TRUE(std::signbit(scaled<double>::shifted(-least, std::numeric_limits<long>::min())));
+  EXPECT_EQ(scaled<double>::shifted(least, 1074), 1.0);
 }
 
 // A cluster of the exact sign that T cannot hold: in a 6-bit format whose

@@ -210,6 +210,18 @@ void check_scaled_bits(std::uint64_t seed) {
     if (x != 0 && std::isfinite(x)) ASSERT_EQ(n.exponent, e + k) << x;
     ASSERT_EQ(std::bit_cast<bits<T>>(S::shifted(x, e)), std::bit_cast<bits<T>>(std::ldexp(x, int(e)))) << x << " " << e;
   }
+  // moves that land in the subnormal range or just below or above it, where
+  // the move rounds: ties to even, to zero, and onto the least normal value
+  constexpr int digits = std::numeric_limits<T>::digits;
+  for (int i = 0; i < 100000; ++i) {
+    const T x = harness::any_finite<T>(source);
+    if (!(std::fabs(x) >= std::numeric_limits<T>::min())) continue;  // a normal x only: its move is on bits
+    int k = 0;
+    std::frexp(x, &k);  // |x| in [2^(k-1), 2^k)
+    const long landing = source.integer(-digits - 4, 2);  // binades above the least normal
+    const long e = (std::numeric_limits<T>::min_exponent - 1 + landing) - (k - 1);
+    ASSERT_EQ(std::bit_cast<bits<T>>(S::shifted(x, e)), std::bit_cast<bits<T>>(std::ldexp(x, int(e)))) << x << " " << e;
+  }
 }
 
 TEST(WindowRescale, ScaledOnBitsAgreesWithFrexpAndLdexp) {

@@ -235,6 +235,21 @@ struct binary_layout {
   }
 };
 
+// condition ? if_true : if_false without a branch, for conditions that are a
+// coin toss on the inputs that reach them (the sign of u, which side of a clamp
+// a rounding lands on). A compiler may turn ?: into a branch, and does (GCC 12
+// at -O3, on release's operands); on bits it cannot. Other types take ?:.
+template <class T>
+T select(bool condition, const T& if_true, const T& if_false) {
+  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+    using bits = typename binary_layout<T>::bits;
+    const bits chosen = bits(0) - bits(condition);  // all ones or all zeros
+    return std::bit_cast<T>(bits((std::bit_cast<bits>(if_true) & chosen) | (std::bit_cast<bits>(if_false) & ~chosen)));
+  } else {
+    return condition ? if_true : if_false;
+  }
+}
+
 // binary32 and binary64 values as ordered integers (-0 and +0 both map to 0),
 // so that k representable values apart is k integers apart.
 template <class T>
