@@ -326,20 +326,24 @@ void solve_scalar_lane(const T* u, const T* dy, const T* phi, T* s, int* which, 
 // rescaled (the lanes inside give the same s, by homogeneity, as the plain-T
 // rounding there is that of an unbounded exponent range), once more with the
 // exact decision if lanes near the contact boundary are left (a lane solved
-// by two passes gets the same answer from both), and the scalar path for the
-// lanes that even these cannot answer.
+// by two passes gets the same answer from both; if the first pass already left
+// lanes undecided, only this one runs), and the scalar path for the lanes that
+// even these cannot answer.
 template <class T>
 [[gnu::noinline]] void solve_block_rescaled(const T* __restrict u, const T* __restrict dy, const T* __restrict phi,
                                             T* __restrict s, int* __restrict which, std::ptrdiff_t start,
-                                            std::ptrdiff_t count) {
+                                            std::ptrdiff_t count, bool undecided_inside) {
   using case_number = std::make_signed_t<bits_t<T>>;
   case_number cases[block];
   bits_t<T> solved[block], undecided[block];
-  bits_t<T> any_undecided = 0;
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    solved[i] = lane<true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided[i]);
-    any_undecided |= undecided[i];
-  }
+  // lanes inside the window that the filter left undecided need the exact
+  // pass whatever the rescaled pass finds: it runs at once, without the other
+  bits_t<T> any_undecided = bits_t<T>(undecided_inside);
+  if (!undecided_inside)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      solved[i] = lane<true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided[i]);
+      any_undecided |= undecided[i];
+    }
   if (any_undecided != 0)
     for (std::ptrdiff_t i = 0; i < count; ++i)
       solved[i] = lane<true, true>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided[i]);
@@ -359,13 +363,15 @@ void solve_lanes(const T* __restrict u, const T* __restrict dy, const T* __restr
   case_number cases[block];
   for (std::ptrdiff_t start = 0; start < n; start += block) {
     const std::ptrdiff_t count = start + block < n ? block : n - start;
-    bits_t<T> all_solved = ~bits_t<T>(0);
+    bits_t<T> all_solved = ~bits_t<T>(0), any_undecided = 0;
     for (std::ptrdiff_t i = 0; i < count; ++i) {
-      bits_t<T> undecided;  // the rescaled pass finds them again
+      bits_t<T> undecided;
       all_solved &= lane<false>(u[start + i], dy[start + i], phi[start + i], s[start + i], cases[i], undecided);
+      any_undecided |= undecided;
     }
     for (std::ptrdiff_t i = 0; i < count; ++i) which[start + i] = static_cast<int>(cases[i]);
-    if (all_solved != ~bits_t<T>(0)) [[unlikely]] solve_block_rescaled(u, dy, phi, s, which, start, count);
+    if (all_solved != ~bits_t<T>(0)) [[unlikely]]
+      solve_block_rescaled(u, dy, phi, s, which, start, count, any_undecided != 0);
   }
 }
 
@@ -397,13 +403,17 @@ CONTACT_BATCH_INLINE __mmask8 merge_eight(const double* __restrict u, const doub
 
 // The lanes i .. i + 7 that solve_lanes_avx512 left unsolved (bits of `solved`
 // clear): lane<true> on all eight (phi's band moves out-of-window lanes), once
-// more with the exact decision if lanes near the contact boundary are left,
-// then the scalar path for those none of these can answer.
+// more with the exact decision if lanes near the contact boundary are left
+// (only this pass if the first already left some undecided), then the scalar
+// path for those none of these can answer.
 CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const double* __restrict dy,
                                                const double* __restrict phi, double* __restrict s,
-                                               int* __restrict which, std::ptrdiff_t i, unsigned solved) {
-  __mmask8 undecided;
-  __mmask8 done = merge_eight<false>(u, dy, phi, s, which, i, __mmask8(solved), undecided);
+                                               int* __restrict which, std::ptrdiff_t i, unsigned solved,
+                                               unsigned undecided_inside) {
+  // lanes inside the window that the filter left undecided need the exact pass
+  // whatever the rescaled pass finds: it runs at once, without the other
+  __mmask8 done = __mmask8(solved), undecided = __mmask8(undecided_inside);
+  if (!undecided_inside) done = merge_eight<false>(u, dy, phi, s, which, i, done, undecided);
   if (undecided & ~done) done = merge_eight<true>(u, dy, phi, s, which, i, done, undecided);
   for (unsigned left = ~unsigned(done) & 0xFFu; left != 0; left &= left - 1)
     solve_scalar_lane(u, dy, phi, s, which, i + std::countr_zero(left));
@@ -416,14 +426,15 @@ CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const
 struct unsolved_vectors {
   static constexpr int capacity = 32;
   std::ptrdiff_t start[capacity];
-  unsigned solved[capacity];
+  unsigned solved[capacity], undecided_inside[capacity];
   int count = 0;
 };
 
 [[gnu::noinline]] inline void solve_rescaled(const double* __restrict u, const double* __restrict dy,
                                              const double* __restrict phi, double* __restrict s, int* __restrict which,
                                              const unsolved_vectors& vectors) {
-  for (int v = 0; v < vectors.count; ++v) solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.solved[v]);
+  for (int v = 0; v < vectors.count; ++v)
+    solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.solved[v], vectors.undecided_inside[v]);
 }
 
 // The same lanes with AVX-512 written out, for double: the operations of lane()
@@ -524,6 +535,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     // vector holds one is a coin toss); solved out of line, the hot loop stays short
     unsolved.start[unsolved.count] = i;
     unsolved.solved[unsolved.count] = solved;
+    unsolved.undecided_inside[unsolved.count] = inside & contact_before & ~decided;
     unsolved.count += solved != 0xFF;
     if (unsolved.count == unsolved_vectors::capacity) [[unlikely]] {
       solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);
