@@ -158,8 +158,8 @@ TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
 }
 
 // Lanes for the rescaled pass's phi bands (detail::phi_bands): phi at both
-// edges of every band and inside it, subnormal phi, phi in no band (from 2^974
-// in double, 2^123 in float), and u, dy whose binades lie around the band's
+// edges of every band and inside it, subnormal phi, phi in no band (from
+// phi_bands::end: 2^1021 in double, 2^125 in float), and u, dy whose binades lie around the band's
 // room apart (the larger anywhere in T's range, so that s sometimes cannot
 // move back), plus lanes of (A.31) where 2 phi dy is close to u and s is far
 // below u and dy.
@@ -172,7 +172,7 @@ lanes<T> band_inputs(std::uint64_t seed, int lanes_per_phi) {
   auto at_binade = [&](int binade) { return std::ldexp(T(1 + harness::unit(source)), binade); };
   std::vector<T> phis;
   for (int j = 0; j < bands::count; ++j) {
-    const int P = bands::least_binade + (j << bands::band_bits), width = 1 << bands::band_bits;
+    const int P = bands::first_of(j), width = bands::last_of(j) - P + 1;
     const T first = std::ldexp(T(1), P);
     phis.push_back(first);
     phis.push_back(contact::detail::next_up(first));
@@ -186,12 +186,13 @@ lanes<T> band_inputs(std::uint64_t seed, int lanes_per_phi) {
   phis.push_back(limits::min());
   phis.push_back(contact::detail::next_down(limits::min()));
   phis.push_back((limits::max)());
+  phis.push_back(bands::end);  // the first phi in no band, and the last one in a band
+  phis.push_back(contact::detail::next_down(bands::end));
 
   lanes<T> in;
   for (const T phi : phis) {
-    const auto band = bands::of_phi(phi);
-    const bool empty = band.lowest >= bands::overflow_binade;
-    const int room = empty ? 100 : band.top - 1 - band.lowest;
+    const bool in_a_band = phi < bands::end;
+    const int room = in_a_band ? bands::of_phi(phi).top - 1 - bands::of_phi(phi).lowest : 100;
     for (int k = 0; k < lanes_per_phi; ++k) {
       const int larger = limits::min_exponent - 1 + pick(limits::max_exponent - limits::min_exponent + 1);
       const int spread = pick(4) == 0 ? pick(room + 1) : room - 2 + pick(5);
@@ -208,14 +209,13 @@ lanes<T> band_inputs(std::uint64_t seed, int lanes_per_phi) {
   return in;
 }
 
-// What the rescaled pass may take on: u and dy normal, phi > 0 in a band that
-// holds something, and their binades at most the band's room apart.
+// What the rescaled pass may take on: u and dy normal, phi > 0 in a band, that is
+// below phi_bands::end, and their binades at most the band's room apart.
 template <class T>
 bool inside_a_band_box(T u, T dy, T phi) {
   using bands = contact::detail::phi_bands<T>;
-  if (!std::isnormal(u) || !std::isnormal(dy) || !(phi > 0) || !std::isfinite(phi)) return false;
+  if (!std::isnormal(u) || !std::isnormal(dy) || !(phi > 0) || !(phi < bands::end)) return false;
   const auto band = bands::of_phi(phi);
-  if (band.lowest >= bands::overflow_binade) return false;
   const int u_binade = contact::detail::binade_of(u), dy_binade = contact::detail::binade_of(dy);
   return std::abs(u_binade - dy_binade) <= band.top - 1 - band.lowest;
 }

@@ -129,7 +129,10 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
       {0x1p700, 0x1p-300, 1.0},      // u and dy too far apart for one shift
       {1e-5, 1e-5, 1e300},           // phi above the window
       {1e-5, -1e-5, 0x1p1023},       // phi in no band: 2 (1 + phi) overflows
-      {1e-5, 1e-5, 0x1p973},         // phi in the last band that has room
+      {1e-5, -1e-5, 0x1p1021},       // phi at the end of the last band: in no band
+      {1e-5, -1e-5, 0x1.fffffffffffffp1020},  // phi at the top of the last band
+      {0x1p-3, -0x1p-2, 0x1.8p1020}, // impact with 2 (1 + phi) near 2^1023
+      {1e-5, 1e-5, 0x1p974},         // phi at the foot of the last band
       {0x1p-1074, 0x1p1023, 0x1p-1074},  // u and dy too far apart for phi's band
       {1e-5, -1e-5, tiny},           // phi subnormal
       {1e300, 1e300, -0.0},          // phi = -0
@@ -146,15 +149,12 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
 
 // A band's bounds hold for every phi in it: they are monotone in phi's
 // range, so any narrower range of phi inside a band leaves at least the
-// band's room (top no lower, lowest no higher). And the last band, where
-// 2 (1 + phi) overflows, admits nothing.
+// band's room (top no lower, lowest no higher).
 template <class T>
 void expect_band_bounds_monotone() {
   using bands = contact::detail::phi_bands<T>;
-  const int width = 1 << bands::band_bits;
   for (int j = 0; j < bands::count; ++j) {
-    const int P = bands::least_binade + j * width;
-    const int Q = std::min(P + width - 1, bands::overflow_binade - 1);
+    const int P = bands::first_of(j), Q = bands::last_of(j);
     const auto band = bands::table[j];
     for (int low = P; low <= Q; low += 5)
       for (int high = low; high <= Q; high += 7) {
@@ -163,8 +163,10 @@ void expect_band_bounds_monotone() {
         EXPECT_LE(narrower.lowest, band.lowest) << "band " << j << " phi binades " << low << ".." << high;
       }
   }
-  const auto last = bands::table[bands::count - 1];
-  EXPECT_GT(last.lowest, last.top - 1);  // no binade for the smaller of u, dy
+  // every band has room, the last one too: it ends where 2 (1 + phi) could overflow
+  for (const auto& band : bands::table) EXPECT_LE(band.lowest, band.top - 1);
+  EXPECT_EQ(bands::last_of(bands::count - 1), bands::overflow_binade - 4);
+  EXPECT_EQ(contact::detail::binade_of(bands::end), bands::overflow_binade - 3);
 }
 
 TEST(PhiBands, EachBandsBoundsHoldForEveryPhiInIt) {

@@ -18,11 +18,8 @@ void print(const char* type) {
   const long E = contact::detail::plain_window<T>;
   std::printf("%s plain %ld %ld %ld %ld 1\n", type, -E, E - 1, E, -E);
   for (int j = 0; j < bands::count; ++j) {
-    const int P = bands::least_binade + (j << bands::band_bits);
-    const int Q = P + (1 << bands::band_bits) - 1 < bands::overflow_binade - 1 ? P + (1 << bands::band_bits) - 1
-                                                                                : bands::overflow_binade - 1;
     const auto band = bands::table[j];
-    std::printf("%s band%d %d %d %d %d 0\n", type, j, P, Q, band.top, band.lowest);
+    std::printf("%s band%d %d %d %d %d 0\n", type, j, bands::first_of(j), bands::last_of(j), band.top, band.lowest);
   }
 }
 

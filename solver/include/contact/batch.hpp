@@ -11,7 +11,7 @@
 // and dy move by one power of two to where phi's band leaves them room and s
 // moves back, exactly (the homogeneity and the bands that solve_stable uses
 // outside its plain window). The lanes that even that cannot answer (phi in
-// no band: phi >= 2^974 in double, 2^123 in float; subnormal phi in float;
+// no band: phi >= 2^1021 in double, 2^125 in float; subnormal phi in float;
 // zero or subnormal u or dy; u and dy too far apart for the band; a subnormal
 // or overflowing s; NaN, infinity, phi <= 0) are solved by the scalar
 // contact::solve_stable.
@@ -132,38 +132,36 @@ struct band_moves {
   static_assert(index_offset >= 0);
   static_assert(((int(std::bit_cast<U>(std::numeric_limits<T>::infinity()) >> significand_bits) + index_offset) >>
                  bands::band_bits) < bands::count,
-                "any phi without its sign bit indexes the table; the phi test below refuses the bands that hold nothing");
+                "any phi without its sign bit indexes the table; the phi test below refuses phi from bands::end up");
+  static_assert([] {
+    for (const auto& b : bands::table)
+      if (b.top - 1 < b.lowest) return false;
+    return true;
+  }(), "every band has room (an unsigned room below zero would admit any spread)");
 
   // A subnormal phi's field (0) reads as binade -bias, which names the band of
   // every subnormal binade only if they all share a band: in double they do,
   // in float they straddle two, and subnormal phi goes to the scalar path.
   static constexpr bool subnormal_phi_in_one_band = ((-bias - bands::least_binade) >> bands::band_bits) == 0;
   static constexpr U phi_least = subnormal_phi_in_one_band ? U(1) : detail::binary_layout<T>::least_normal;
-  // phi from the first band that holds nothing up (2^974 in double, 2^123 in float)
-  static constexpr int first_empty_band = [] {
-    int j = 0;
-    while (j < bands::count && bands::table[j].lowest < bands::overflow_binade) ++j;
-    return j;
-  }();
-  static_assert(first_empty_band < bands::count, "the last bands hold nothing: 2 (1 + phi) overflows");
-  static constexpr U phi_end = U(bias + bands::least_binade + (first_empty_band << bands::band_bits)) << significand_bits;
+  static constexpr U phi_end = std::bit_cast<U>(bands::end);  // phi from here up is in no band
 
   static constexpr std::array<U, bands::count> top_binade = [] {  // bits(2^(top-1))
     std::array<U, bands::count> fields{};
-    for (int j = 0; j < first_empty_band; ++j) fields[j] = U(bias + bands::table[j].top - 1) << significand_bits;
+    for (int j = 0; j < bands::count; ++j) fields[j] = U(bias + bands::table[j].top - 1) << significand_bits;
     return fields;
   }();
   static constexpr std::array<U, bands::count> room = [] {
     std::array<U, bands::count> rooms{};
-    for (int j = 0; j < first_empty_band; ++j)
+    for (int j = 0; j < bands::count; ++j)
       rooms[j] = U(bands::table[j].top - 1 - bands::table[j].lowest) << significand_bits;
     return rooms;
   }();
 };
 
 // The shift (to add to the bit patterns of u and dy) by phi's band; `fits` is
-// all ones where the lane may take it: u and dy normal, phi > 0 in a band that
-// holds something, and the binades of |u| and |dy| within the band's room.
+// all ones where the lane may take it: u and dy normal, phi in (0, bands::end),
+// and the binades of |u| and |dy| within the band's room.
 // The table lookups are gathers (or a load per lane), never a branch.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bits, bits_t<T> phi_bits, bits_t<T>& fits) {
@@ -426,7 +424,7 @@ CONTACT_BATCH_INLINE void solve_eight_rescaled(const double* __restrict u, const
 struct unsolved_vectors {
   static constexpr int capacity = 32;
   std::ptrdiff_t start[capacity];
-  unsigned solved[capacity], undecided_inside[capacity];
+  unsigned lanes[capacity];  // the solved lanes' mask, and above it (<< 8) the undecided lanes inside the window
   int count = 0;
 };
 
@@ -434,7 +432,7 @@ struct unsolved_vectors {
                                              const double* __restrict phi, double* __restrict s, int* __restrict which,
                                              const unsolved_vectors& vectors) {
   for (int v = 0; v < vectors.count; ++v)
-    solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.solved[v], vectors.undecided_inside[v]);
+    solve_eight_rescaled(u, dy, phi, s, which, vectors.start[v], vectors.lanes[v] & 0xFFu, vectors.lanes[v] >> 8);
 }
 
 // The same lanes with AVX-512 written out, for double: the operations of lane()
@@ -534,8 +532,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     // noted without a branch (where out-of-window lanes are common, whether a
     // vector holds one is a coin toss); solved out of line, the hot loop stays short
     unsolved.start[unsolved.count] = i;
-    unsolved.solved[unsolved.count] = solved;
-    unsolved.undecided_inside[unsolved.count] = inside & contact_before & ~decided;
+    unsolved.lanes[unsolved.count] = unsigned(solved) | unsigned(__mmask8(inside & contact_before & ~decided)) << 8;
     unsolved.count += solved != 0xFF;
     if (unsolved.count == unsolved_vectors::capacity) [[unlikely]] {
       solve_rescaled(u_in, dy_in, phi_in, s_out, which_out, unsolved);

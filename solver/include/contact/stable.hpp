@@ -235,7 +235,7 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
 // neighbour s is). Where either s would be subnormal or 2^-k s overflow,
 // solve_cases<false> rounds it once, as before. Free flight is answered first,
 // for any finite u and dy. u and dy too far apart for the band, phi = 0, phi
-// beyond the last band and invalid input go on to solve_anywhere.
+// from the end of the last band up and invalid input go on to solve_anywhere.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 [[gnu::noinline]] solution<T> solve_by_phi_band(T u, T dy, T phi) {
@@ -244,7 +244,7 @@ template <class T>
   constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
   // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
   // for s = -u = 0, a zero of the other sign than plain T's fma gives
-  if (!(phi > 0) || !(phi < std::numeric_limits<T>::infinity())) return solve_anywhere(u, dy, phi);
+  if (!(phi > 0) || !(phi < phi_bands<T>::end)) return solve_anywhere(u, dy, phi);
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   int larger, smaller;  // binades of the larger and the smaller non-zero one of |u|, |dy|
   if (layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude)) [[likely]] {

@@ -101,8 +101,9 @@ int binade_of(const T& x) {
 // over- or underflows (docs/equations.md, section 6, lists each bound;
 // proofs/gappa/window/ proves them per band). A band leaves u and dy 406 to
 // 930 binades of spread in double, 16 to 105 in float (the plain window: 480
-// and 48 with phi inside it); phi from 2^974 (double) or 2^123 (float) up is
-// in no band, as 2 (1 + phi) would overflow.
+// and 48 with phi inside it). The last band ends early, at `end`, 2^1021
+// (double) or 2^125 (float): from there up 2 (1 + phi) could overflow, and
+// phi is in no band.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
 struct phi_bands {
@@ -114,17 +115,26 @@ struct phi_bands {
   static constexpr int overflow_binade = std::numeric_limits<T>::max_exponent;         // 2^1024 overflows
   static constexpr int least_binade = least_normal_binade - (digits - 1);               // -1074, the least subnormal
   static constexpr int band_bits = std::is_same_v<T, double> ? 7 : 4;
-  static constexpr int count = ((overflow_binade - 1 - least_binade) >> band_bits) + 1;
+  // the largest binade of phi in a band: 2 (1 + phi) < 2^(Q + 3) must stay finite
+  static constexpr int last_phi_binade = overflow_binade - 4;
+  static constexpr int count = ((last_phi_binade - least_binade) >> band_bits) + 1;
+  // band j holds phi in [2^first_of(j), 2^(last_of(j) + 1))
+  static constexpr int first_of(int j) { return least_binade + (j << band_bits); }
+  static constexpr int last_of(int j) { return std::min(first_of(j) + (1 << band_bits) - 1, last_phi_binade); }
+  // 2^(last_phi_binade + 1): phi from here up is in no band
+  static constexpr T end = [] {
+    T power = 1;
+    for (int k = 0; k <= last_phi_binade; ++k) power *= 2;
+    return power;
+  }();
 
   static constexpr int ceil_half(int x) { return x >= 0 ? (x + 1) / 2 : -(-x / 2); }
 
   // phi in [2^P, 2^(Q+1)), |u|, |dy| < 2^top; the bounds of docs/equations.md, section 6.
   static constexpr band of(int P, int Q) {
     const int p = digits, emin = least_normal_binade;
-    // 2 (1 + phi) must stay finite whatever u and dy are: the band holds nothing
-    if (Q + 3 >= overflow_binade) return {0, overflow_binade};
     // the largest intermediates, below 2^(2 top + max(Q + 3, 0) + 1): the discriminants
-    // (non-negative: Q + 3 < overflow_binade here, so / 2 is the floor)
+    // (non-negative: Q <= last_phi_binade, so / 2 is the floor)
     const int top = (overflow_binade - 1 - std::max(Q + 3, 0)) / 2;
     // a non-zero phi is a multiple of 2^(Pe - p + 1), a non-zero u or dy of 2^(b - p + 1)
     const int Pe = std::max(P, emin);
@@ -137,13 +147,10 @@ struct phi_bands {
   }
   static constexpr std::array<band, count> table = [] {
     std::array<band, count> bands{};
-    for (int j = 0; j < count; ++j) {
-      const int P = least_binade + (j << band_bits);
-      bands[j] = of(P, std::min(P + (1 << band_bits) - 1, overflow_binade - 1));
-    }
+    for (int j = 0; j < count; ++j) bands[j] = of(first_of(j), last_of(j));
     return bands;
   }();
-  // the band of a finite phi > 0, subnormals included
+  // the band of phi in (0, end), subnormals included
   static band of_phi(const T& phi) { return table[(binade_of(phi) - least_binade) >> band_bits]; }
 };
 
