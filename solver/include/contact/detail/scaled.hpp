@@ -129,10 +129,10 @@ struct scaled {
   friend scaled square_root(const scaled& a) {
     if (a.significand <= 0) return normalized(detail::square_root(a.significand), 0);
     // an even exponent halves exactly; the significand moves into [0.25, 1)
-    bool odd = (a.exponent % 2) != 0;
-    T m = odd ? a.significand / 2 : a.significand;
-    long e = odd ? a.exponent + 1 : a.exponent;
-    return normalized(detail::square_root(m), e / 2);
+    // (the parity of the exponent is a coin toss: a select, not a branch)
+    const bool odd = (a.exponent % 2) != 0;
+    const T m = select(odd, T(a.significand / 2), a.significand);
+    return normalized(detail::square_root(m), (a.exponent + long(odd)) / 2);
   }
 
  private:
