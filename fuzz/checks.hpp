@@ -56,7 +56,7 @@ std::string reference_text(const reference::certified& exact) {
 template <class T>
 bool beyond_range(const reference::certified& exact, const T& dy, bool positive) {
   const T largest = (std::numeric_limits<T>::max)();
-  if (positive && exact.which == contact_case::release && dy == largest) return true;
+  if (positive && only_infinity_on_its_side(exact.which, dy)) return true;
   if (!positive && exact.which == contact_case::impact && dy == -largest) return true;
   const reference::real bound = reference::exactly(largest, mpfr_get_prec(exact.s.get()));
   return mpfr_cmpabs(exact.s.get(), bound.get()) > 0 && (mpfr_sgn(exact.s.get()) > 0) == positive;

@@ -87,6 +87,27 @@ TEST(Cases, AnInvalidResultLiesOnNoSide) {
   EXPECT_FALSE(lies_on_its_side(contact_case::invalid, nan, 1.0));
 }
 
+// Release with dy the largest double: only +infinity lies on release's side
+// of dy, and stable answers it even where the root itself rounds to the
+// largest double (a known cost of keeping each case on its side; the
+// checkers accept it through only_infinity_on_its_side). Found by the
+// check tool's fuzzer on the stable candidate.
+TEST(Cases, ReleaseWithTheLargestDyAnswersInfinity) {
+  const double largest = std::numeric_limits<double>::max();
+  const double u = -largest, dy = largest, phi = 0x1p-1073;
+  const auto got = solve_stable(u, dy, phi);
+  EXPECT_EQ(got.which, contact_case::release);
+  EXPECT_EQ(got.s, inf);
+  EXPECT_TRUE(only_infinity_on_its_side(got.which, dy));
+  EXPECT_FALSE(only_infinity_on_its_side(got.which, std::nextafter(dy, 0.0)));
+  EXPECT_FALSE(only_infinity_on_its_side(contact_case::contact, dy));
+  // the root rounds to the largest double: the infinity costs accuracy, by the reference
+  const auto exact = reference::solve(u, dy, phi);
+  EXPECT_EQ(exact.which, contact_case::release);
+  EXPECT_EQ(reference::ulp_error<double>(largest, exact), 0.0);
+  EXPECT_EQ(reference::ulp_error<double>(got.s, exact), inf);
+}
+
 TEST(Types, EveryNamedTypeDispatchesAndAnUnknownNameDoesNot) {
   int called = 0;
   const auto count_call = [&](auto) { ++called; };

@@ -4,6 +4,8 @@
 // plain window, including results that are subnormal or overflow.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -258,6 +260,64 @@ TEST(WindowRescale, DominantTermDecidesOnlyWhereItOutweighsTheRest) {
     const int sign = sign_of_dominant_term(t);
     if (sign != 0) ASSERT_EQ(sign, contact::detail::sign_of_exact_sum(plain));
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The exact sign of u + dy - phi dy, from scaled<T>'s exact product and sum.
+template <class T>
+int exact_contact_sign(const T& u, const T& dy, const T& phi) {
+  using S = contact::detail::scaled<T>;
+  const auto product = contact::detail::exact_product(S(phi), S(dy));
+  return contact::detail::sign_of_exact_sum(std::array<S, 4>{S(u), S(dy), -product[0], -product[1]});
+}
+
+// sign_of_dominant_binade, the scaled path's first test of (A.21), decides
+// only where one term's binade outweighs the other two, and then as the exact
+// sum does. u and phi's binades are drawn near dy's and the thresholds (a
+// term's least binade one above the others' bounds) so that its edges are hit,
+// and across the whole range with zeros and subnormals.
+template <class T>
+void check_dominant_binade(std::uint64_t seed) {
+  using contact::detail::sign_of_dominant_binade;
+  constexpr int least = std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits;  // 2^least: least subnormal
+  constexpr int most = std::numeric_limits<T>::max_exponent - 1;
+  harness::seeded_source source(seed);
+  int decided[3] = {0, 0, 0};  // -1, 0, +1
+  for (int i = 0; i < 300000; ++i) {
+    const bool near = source.integer(0, 3) != 0;
+    const long dy_binade = source.integer(near ? least + 8 : least, near ? most - 8 : most);
+    auto nearby = [&](long center) { return std::clamp<long>(center + source.integer(-6, 6), least, most); };
+    const T dy = harness::log_uniform<T>(source, dy_binade, dy_binade);
+    const long u_binade = near ? nearby(dy_binade) : source.integer(least, most);
+    const T u = source.integer(0, 9) == 0 ? T(0) : harness::random_sign(source, harness::log_uniform<T>(source, u_binade, u_binade));
+    const long phi_binade = near ? std::clamp<long>(source.integer(-6, 6), least, most) : source.integer(least, most);
+    const T phi = source.integer(0, 9) == 0 ? T(0) : harness::log_uniform<T>(source, phi_binade, phi_binade);
+    const int sign = sign_of_dominant_binade(u, dy, phi);
+    ++decided[sign + 1];
+    if (sign != 0) ASSERT_EQ(sign, exact_contact_sign(u, dy, phi)) << std::hexfloat << u << " " << dy << " " << phi;
+  }
+  // not vacuous: both signs are decided, and some inputs left to the exact sum
+  EXPECT_GT(decided[0], 10000);
+  EXPECT_GT(decided[2], 10000);
+  EXPECT_GT(decided[1], 10000);
+}
+
+TEST(WindowRescale, DominantBinadeDecidesOnlyWhereOneTermOutweighsTheRest) {
+  using contact::detail::sign_of_dominant_binade;
+  // u's least binade must exceed the others' bounds: 2^11 does over dy < 2^10, 2^10 does not
+  EXPECT_EQ(sign_of_dominant_binade(0x1p11, 0x1.fffp9, 0.0), 1);
+  EXPECT_EQ(sign_of_dominant_binade(-0x1p11, 0x1.fffp9, 0.0), -1);
+  EXPECT_EQ(sign_of_dominant_binade(-0x1p10, 0x1.fffp9, 0.0), 0);
+  // phi dy = 1 here, in [2^0, 2^2) as far as the binades tell: it outweighs u < 2^-1, not u < 2^0
+  EXPECT_EQ(sign_of_dominant_binade(0x1.fp-2, 0x1p-3, 0x1p3), -1);
+  EXPECT_EQ(sign_of_dominant_binade(0x1.fp-1, 0x1p-3, 0x1p3), 0);  // and rightly: the sum is +0x1.8p-4
+  EXPECT_EQ(sign_of_dominant_binade(0x1.fp-2, 1.5, 1.5), 0);
+  EXPECT_EQ(sign_of_dominant_binade(0.0, 0x1p-1074, 0.0), 1);
+  check_dominant_binade<double>(21);
+  check_dominant_binade<float>(22);
 }
 
 }  // namespace

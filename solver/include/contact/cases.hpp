@@ -1,6 +1,7 @@
 // The four cases of the one-sided contact step (A.2) and the result type.
 #pragma once
 
+#include <limits>
 #include <string_view>
 
 namespace contact {
@@ -49,6 +50,15 @@ constexpr bool lies_on_its_side(contact_case c, const T& s, const T& dy) {
     case contact_case::release: return s > dy;
     default: return false;
   }
+}
+
+// Release claims s > dy: with dy the largest finite T only +infinity lies
+// there, so the library answers +infinity in that case whatever the root
+// rounds to (impact, s < dy, cannot have dy = -largest: u would exceed it).
+// Accuracy checks accept that infinity (docs/equations.md, section 6).
+template <class T>
+constexpr bool only_infinity_on_its_side(contact_case c, const T& dy) {
+  return c == contact_case::release && dy == (std::numeric_limits<T>::max)();
 }
 
 template <class T>

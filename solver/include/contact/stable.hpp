@@ -14,6 +14,7 @@
 // at most one ulp, onto dy itself, and the clamp moves it back.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -87,6 +88,25 @@ template <class T>
   return !(leading_component_of_exact_sum(terms) < 0);
 }
 
+// The sign of the exact sum u + dy - phi dy (dy > 0, phi >= 0, u finite) when
+// the binades alone tell it, else 0. |x| lies in [2^b, 2^(b+1)) for b =
+// binade_of(x), and |phi dy| in [2^(bp + bd), 2^(bp + bd + 2)): a term whose
+// least magnitude is 2^lo with lo above every other term's bound 2^hi
+// exceeds the other two together (below 2 2^hi <= 2^lo), so its sign is the
+// sum's. A zero u or phi is a term that is absent.
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+int sign_of_dominant_binade(const T& u, const T& dy, const T& phi) {
+  constexpr int absent = std::numeric_limits<int>::min() / 2;  // below every bound, and no sum below overflows
+  const int dy_least = binade_of(dy), dy_bound = dy_least + 1;
+  const int u_least = u == 0 ? absent : binade_of(u), u_bound = u_least + 1;
+  const int product_least = phi == 0 ? absent : binade_of(phi) + dy_least, product_bound = product_least + 2;
+  if (u_least > std::max(dy_bound, product_bound)) return u > 0 ? 1 : -1;
+  if (dy_least > std::max(u_bound, product_bound)) return 1;
+  if (product_least > std::max(u_bound, dy_bound)) return -1;
+  return 0;
+}
+
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
 // enters as the exact pair of two_prod; the sign is then that of an exact sum.
 //
@@ -94,21 +114,36 @@ template <class T>
 // is within eps (|u + dy| + |e|) of the exact value, so outside the margin
 // 4 eps (|u| + |dy| + |phi dy|) its sign is the exact sign, and only inputs
 // within a few ulps of the boundary pay for the exact sum.
+template <class T>
+int estimated_contact_sign(const T& u, const T& dy, const T& phi) {  // +1, -1, or 0: within the margin
+  using std::fabs;
+  const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
+  // dy >= 0 and phi >= 0 wherever it is asked: |dy| = dy and |phi dy| = phi dy, as values
+  const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + dy + phi * dy);
+  if (fabs(estimate) > margin) return estimate > 0 ? 1 : -1;
+  return 0;
+}
+
 template <bool plain, class T>
 bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   if constexpr (plain) {
-    using std::fabs;
-    const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
-    // dy >= 0 and phi >= 0 wherever it is asked: |dy| = dy and |phi dy| = phi dy, as values
-    const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + dy + phi * dy);
-    if (fabs(estimate) > margin) return estimate > 0;
+    if (const int sign = estimated_contact_sign(u, dy, phi)) return sign > 0;
     return exact_sum_nonnegative(u, dy, phi);
   } else {  // discarded, branches and all, where plain
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+      // most inputs here lie outside every phi band, u and dy hundreds of
+      // binades apart: one term's binade decides, before any scaled<T> is
+      // built (measured: 22% fewer instructions on such contact and release inputs)
+      if (const int sign = sign_of_dominant_binade(u, dy, phi)) return sign > 0;
+    }
     const scaled<T> dy_s(dy);
     const auto product = exact_product(scaled<T>(phi), dy_s);
     const std::array<scaled<T>, 4> terms = {scaled<T>(u), dy_s, -product[0], -product[1]};
-    // far from the boundary one term decides, exactly, without sorting the terms
-    if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
+    // far from the boundary one term decides, exactly, without sorting the
+    // terms (for binary32 and binary64 the binades above have decided all
+    // such inputs but those whose phi dy rounds up to a power of two)
+    if constexpr (!(std::is_same_v<T, float> || std::is_same_v<T, double>))
+      if (const int sign = sign_of_dominant_term(terms)) return sign > 0;
     return sign_of_exact_sum(terms) >= 0;
   }
 }
@@ -183,11 +218,14 @@ solution<T> free_flight(const T& u) {
 // are the same and known sooner: on the band route the moved values come at
 // the end of a chain of integer operations, and a coin-toss branch on them
 // would be found mispredicted only at its end (measured: the route cost
-// about twice as much).
-template <bool plain, bool guess_case_early = false, class T>
-solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& unmoved_u, const T& unmoved_dy) {
+// about twice as much). Declared inline: GCC then inlines it into
+// solve_stable's common path whatever its other callers (measured: 50
+// instructions per physical input, against 64 with a call).
+template <bool plain, bool band_route = false, class T>
+inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& unmoved_u, const T& unmoved_dy) {
   if (unmoved_dy <= 0) {
-    if (unmoved_u <= -unmoved_dy) return free_flight(u);
+    if constexpr (!band_route)  // the band route answers free flight before it moves u and dy
+      if (unmoved_u <= -unmoved_dy) return free_flight(u);
     T s = evaluate<plain>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi);
     // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
     // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
@@ -202,20 +240,26 @@ solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& unmoved_
     auto release_answer = [&] {
       return solution<T>{clamped_above_positive(stable_form::release(u, dy, phi), dy), contact_case::release};
     };
-    if constexpr (guess_case_early) {
+    if constexpr (band_route) {
       // Contact or release is a coin toss too. On the band route the
       // two-rounding estimate of the unmoved input (which may over- or
       // underflow, so that it only guesses) takes the branch early; the exact
       // decision on the moved input, late, only confirms it, and almost always
       // does. (Where the input is not moved the guess would be the decision's
       // own first step, twice: measured 8% slower on physical inputs.)
+      // An input the estimate leaves undecided comes back as `invalid` (no
+      // valid input's answer): the caller takes the exact decision out of
+      // line, so that this path makes no call that values must survive.
       const bool likely_contact = fused_multiply_add(-phi, unmoved_dy, T(unmoved_u + unmoved_dy)) > 0;
+      const int sign = estimated_contact_sign(u, dy, phi);
       if (likely_contact) {
-        if (stays_in_contact<plain>(u, dy, phi)) [[likely]] return contact_answer();
-        return release_answer();
+        if (sign > 0) [[likely]] return contact_answer();
+      } else {
+        if (sign < 0) [[likely]] return release_answer();
       }
-      if (!stays_in_contact<plain>(u, dy, phi)) [[likely]] return release_answer();
-      return contact_answer();
+      if (sign > 0) return contact_answer();
+      if (sign < 0) return release_answer();
+      return {T(0), contact_case::invalid};
     } else {
       if (stays_in_contact<plain>(u, dy, phi)) return contact_answer();
       return release_answer();
@@ -244,18 +288,10 @@ solution<T> solve_cases(const T& u, const T& dy, const T& phi) {
   return solve_cases<plain>(u, dy, phi, u, dy);
 }
 
-// The band route's plain path, inlined whole into it: out of line, the route
-// passed its arguments through memory (1.6 ns of 21 per input of that route).
-// (Inlining solve_cases everywhere cost the common path 5%.)
+// The scaled<T> path, out of line: its callers are fast paths that seldom need
+// it. By value: their arguments stay in registers, so a tail call can reach it.
 template <class T>
-[[gnu::always_inline, gnu::flatten]] inline solution<T> solve_moved(const T& moved_u, const T& moved_dy, const T& phi,
-                                                                    const T& u, const T& dy) {
-  return solve_cases<true, true>(moved_u, moved_dy, phi, u, dy);
-}
-
-// The scaled<T> path, out of line: its callers are fast paths that seldom need it.
-template <class T>
-[[gnu::noinline]] solution<T> solve_scaled(const T& u, const T& dy, const T& phi) {
+[[gnu::noinline]] solution<T> solve_scaled(T u, T dy, T phi) {
   return solve_cases<false>(u, dy, phi);
 }
 
@@ -277,47 +313,21 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
 // clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever its
 // neighbour s is). Where either s would be subnormal or 2^-k s overflow,
 // solve_cases<false> rounds it once, as before. Free flight is answered first,
-// for any finite u and dy. u and dy too far apart for the band, phi = 0, phi
-// from the end of the last band up and invalid input go on to solve_anywhere.
+// for any finite u and dy. u and dy too far apart for the band take the
+// scaled path; phi = 0, phi from the end of the last band up and invalid
+// input go on to solve_anywhere.
 template <class T>
   requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
-[[gnu::noinline]] solution<T> solve_by_phi_band(T u, T dy, T phi) {
+[[gnu::noinline]] solution<T> solve_outside_bands(T u, T dy, T phi) {
+  return solve_anywhere(u, dy, phi);
+}
+
+// The band route's last step: `inside`, the answer for u and dy moved by 2^shift, moved back.
+template <class T>
+[[gnu::always_inline]] inline solution<T> moved_back(const solution<T>& inside, T u, T dy, T phi, int shift) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
-  constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
-  // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
-  // for s = -u = 0, a zero of the other sign than plain T's fma gives
-  if (!(phi > 0) || !(phi < phi_bands<T>::end)) return solve_anywhere(u, dy, phi);
-  const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
-  int larger, smaller;  // binades of the larger and the smaller non-zero one of |u|, |dy|
-  const bool both_normal = layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude);
-  if (both_normal) [[likely]] {
-    // max and min by arithmetic, as a compiler turns std::max into a branch
-    // here, and which of u, dy is larger is a coin toss
-    const int u_binade = int(u_magnitude >> layout::significand_bits) - layout::bias;
-    const int dy_binade = int(dy_magnitude >> layout::significand_bits) - layout::bias;
-    const int spread = std::abs(u_binade - dy_binade);
-    larger = (u_binade + dy_binade + spread) / 2;
-    smaller = larger - spread;
-  } else {  // zeros and subnormals; infinities and NaN go on
-    if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
-    if (u_magnitude == 0 && dy_magnitude == 0) return solve_cases<true>(u, dy, phi);
-    const int u_binade = u_magnitude == 0 ? binade_of(dy) : binade_of(u);
-    const int dy_binade = dy_magnitude == 0 ? u_binade : binade_of(dy);
-    larger = u_binade > dy_binade ? u_binade : dy_binade;
-    smaller = u_binade > dy_binade ? dy_binade : u_binade;
-  }
-  // free flight needs no arithmetic, hence no band: answered first, also for
-  // u and dy too far apart for any band (a third of such inputs in the extreme scene)
-  if ((dy <= 0) & (u <= -dy)) return free_flight(u);  // one branch: the sign of dy is a coin toss
-  const auto band = phi_bands<T>::of_phi(phi);
-  const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
-  if (smaller + shift < band.lowest) return solve_anywhere(u, dy, phi);
-  // the band puts both in its normal binades: for normal u and dy the move is exact on the exponent field
   const bits offset = bits(shift) << layout::significand_bits;
-  const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
-  const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
-  const solution<T> inside = solve_moved(moved_u, moved_dy, phi, u, dy);
   const bits s_magnitude = std::bit_cast<bits>(inside.s) & ~layout::sign;
   if (s_magnitude == 0) return inside;
   // s normal both before and after the move: the exponent field moves, exactly
@@ -334,6 +344,86 @@ template <class T>
   if (inside_normal & (binade_of(inside.s) - shift > std::numeric_limits<T>::max_exponent))
     return {std::numeric_limits<T>::infinity(), inside.which};
   return solve_scaled(u, dy, phi);
+}
+
+// The band route for an input the estimate left undecided: the exact decision, out of line.
+template <class T>
+[[gnu::noinline, gnu::flatten]] solution<T> solve_moved_exactly(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
+  return moved_back(solve_cases<true>(moved_u, moved_dy, phi, u, dy), u, dy, phi, shift);
+}
+
+// The band route from the binades of the larger and the smaller non-zero one
+// of |u| and |dy| on; both_normal: u and dy are normal, and move on their bits.
+template <bool both_normal, class T>
+[[gnu::always_inline]] inline solution<T> solve_in_band(T u, T dy, T phi, int larger, int smaller) {
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  // free flight needs no arithmetic, hence no band: answered first, also for
+  // u and dy too far apart for any band (a third of such inputs in the extreme scene)
+  if ((dy <= 0) & (u <= -dy)) return free_flight(u);  // one branch: the sign of dy is a coin toss
+  const auto band = phi_bands<T>::of_phi(phi);
+  const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
+  // valid, and outside safe_window (a band holds all of it): the scaled path
+  static_assert(phi_bands<T>::holds_safe_window);
+  if (smaller + shift < band.lowest) return solve_scaled(u, dy, phi);
+  // the band puts both in its normal binades: for normal u and dy the move is exact on the exponent field
+  const bits offset = bits(shift) << layout::significand_bits;
+  const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
+  const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
+  const solution<T> inside = solve_cases<true, true>(moved_u, moved_dy, phi, u, dy);
+  if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
+  return moved_back(inside, u, dy, phi, shift);
+}
+
+// The band route for zeros and subnormals (infinities and NaN go on), out of
+// line, so that the normal inputs' route makes no call but tail calls.
+template <class T>
+[[gnu::noinline]] solution<T> solve_by_phi_band_not_normal(T u, T dy, T phi) {
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
+  const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
+  if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
+  if (u_magnitude == 0 && dy_magnitude == 0) return solve_cases<true>(u, dy, phi);
+  const int u_binade = u_magnitude == 0 ? binade_of(dy) : binade_of(u);
+  const int dy_binade = dy_magnitude == 0 ? u_binade : binade_of(dy);
+  return solve_in_band<false>(u, dy, phi, std::max(u_binade, dy_binade), std::min(u_binade, dy_binade));
+}
+
+// (A.2) is homogeneous in (u, dy): s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi),
+// with the same case. With phi > 0 finite, finite u and dy move by one exact
+// power of two to where phi's band (phi_bands) leaves room for them, the plain
+// path solves them, and s moves back. There plain T rounds as the unbounded
+// exponent range of scaled<T> does (docs/equations.md, section 6), and
+// scaled<T> commutes with powers of two, so this is solve_cases<false>'s
+// answer wherever s is normal or zero both before and after it moves back (the
+// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever its
+// neighbour s is). Where either s would be subnormal or 2^-k s overflow,
+// solve_cases<false> rounds it once, as before. Free flight is answered first,
+// for any finite u and dy. u and dy too far apart for the band take the
+// scaled path; phi = 0, phi from the end of the last band up and invalid
+// input go on to solve_anywhere. Every call it makes is a tail call to an
+// out-of-line function taking its arguments in registers, so that the route
+// itself saves no register and spills nothing (measured: 131 instructions per
+// input of the band route, against 153 with calls that values had to survive).
+template <class T>
+  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+[[gnu::noinline, gnu::flatten]] solution<T> solve_by_phi_band(T u, T dy, T phi) {
+  using layout = binary_layout<T>;
+  using bits = typename layout::bits;
+  // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
+  // for s = -u = 0, a zero of the other sign than plain T's fma gives
+  if (!(phi > 0) || !(phi < phi_bands<T>::end)) return solve_outside_bands(u, dy, phi);
+  const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
+  if (!(layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude))) [[unlikely]]
+    return solve_by_phi_band_not_normal(u, dy, phi);
+  // max and min by arithmetic, as a compiler turns std::max into a branch
+  // here, and which of u, dy is larger is a coin toss
+  const int u_binade = int(u_magnitude >> layout::significand_bits) - layout::bias;
+  const int dy_binade = int(dy_magnitude >> layout::significand_bits) - layout::bias;
+  const int spread = std::abs(u_binade - dy_binade);
+  const int larger = (u_binade + dy_binade + spread) / 2;
+  return solve_in_band<true>(u, dy, phi, larger, larger - spread);
 }
 
 }  // namespace detail

@@ -150,6 +150,16 @@ struct phi_bands {
     for (int j = 0; j < count; ++j) bands[j] = of(first_of(j), last_of(j));
     return bands;
   }();
+  // Whether every input of safe_window (u, dy, phi in binades -E .. E, E =
+  // plain_window) fits its phi's band: the larger of u, dy moved to top - 1,
+  // the smaller, at most 2 E binades below, still at lowest or above. The band
+  // route then sends to the scaled path only inputs outside safe_window.
+  static constexpr bool holds_safe_window = [] {
+    constexpr int E = int(plain_window<T>);
+    for (int j = 0; j < count; ++j)
+      if (last_of(j) >= -E && first_of(j) <= E && table[j].top - 1 - table[j].lowest < 2 * E) return false;
+    return true;
+  }();
   // the band of phi in (0, end), subnormals included
   static band of_phi(const T& phi) { return table[(binade_of(phi) - least_binade) >> band_bits]; }
 };
