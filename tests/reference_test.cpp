@@ -116,6 +116,21 @@ TEST(Reference, MinusInfinityIsExactOnlyForARootBelowMinusTheLargestDouble) {
   EXPECT_EQ(reference::ulp_error(-inf, root_at(1.0, 1024)), inf);
 }
 
+// Release with dy the largest double answers +infinity by design (the only
+// value on its side of dy); the checkers grade answers by accepted_ulp_error.
+TEST(Reference, AcceptedErrorCountsReleasesForcedInfinityAsExact) {
+  const auto root_is_the_largest_double = root_at(largest, 0);  // a release root
+  EXPECT_EQ(reference::ulp_error(inf, root_is_the_largest_double), inf);
+  EXPECT_EQ(reference::accepted_ulp_error(inf, root_is_the_largest_double, largest), 0.0);
+}
+
+TEST(Reference, AcceptedErrorIsTheUlpErrorEverywhereElse) {
+  const auto root_is_the_largest_double = root_at(largest, 0);
+  EXPECT_EQ(reference::accepted_ulp_error(inf, root_is_the_largest_double, std::nextafter(largest, 0.0)), inf);
+  EXPECT_EQ(reference::accepted_ulp_error(-inf, root_is_the_largest_double, largest), inf);
+  EXPECT_EQ(reference::accepted_ulp_error(std::nextafter(largest, 0.0), root_is_the_largest_double, largest), 1.0);
+}
+
 TEST(Reference, ANaNAnswerHasANaNError) {
   EXPECT_TRUE(std::isnan(reference::ulp_error(std::numeric_limits<double>::quiet_NaN(), root_at(1.0, 0))));
 }
