@@ -111,7 +111,7 @@ struct printf_formats {
 template <class T>
 std::string printed(const T& x, const printf_formats& formats) {
   char text[128];
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+  if constexpr (contact::detail::hardware_binary<T>) {
     std::snprintf(text, sizeof text, formats.for_double, double(x));
   } else if constexpr (std::is_same_v<T, long double>) {
     std::snprintf(text, sizeof text, formats.for_long_double, x);

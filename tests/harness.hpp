@@ -29,7 +29,7 @@ namespace contact::harness {
 // GoogleTest's and RapidCheck's printers look for it.
 template <class T>
 std::ostream& operator<<(std::ostream& out, const input<T>& x) {
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+  if constexpr (contact::detail::hardware_binary<T>) {
     char text[160];
     std::snprintf(text, sizeof text, "u=%a dy=%a phi=%a", double(x.u), double(x.dy), double(x.phi));
     return out << text;

@@ -79,7 +79,7 @@ tally measure(const std::string& family, const rc::Gen<input<T>>& gen, int count
 
 template <class T>
 int samples_for() {
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) return 20000;
+  if constexpr (contact::detail::hardware_binary<T>) return 20000;
   if constexpr (std::is_same_v<T, long double>) return 5000;
   return 1000;
 }

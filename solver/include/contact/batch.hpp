@@ -57,7 +57,7 @@ namespace contact {
 namespace batch_detail {
 
 template <class T>
-inline constexpr bool has_lane_kernel = std::is_same_v<T, double> || std::is_same_v<T, float>;
+inline constexpr bool has_lane_kernel = detail::hardware_binary<T>;
 
 template <class T>
 using bits_t = typename detail::binary_layout<T>::bits;

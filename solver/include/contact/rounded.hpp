@@ -277,7 +277,7 @@ template <class T>
 gap_pair<T> half_gaps(const T& x) {
   using std::fabs;
   T power;  // 2^e <= |x| < 2^(e+1)
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+  if constexpr (detail::hardware_binary<T>) {
     using layout = binary_layout<T>;  // the exponent field alone
     power = std::bit_cast<T>(std::bit_cast<typename layout::bits>(x) & (layout::exponent_field << layout::significand_bits));
   } else {
@@ -315,7 +315,7 @@ T veltkamp_splitter() {
 template <class T>
 [[gnu::always_inline]] inline detail::exact_pair<T> product(const T& a, const T& b) {
 #if defined(__FMA__)
-  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) return detail::two_prod(a, b);
+  if constexpr (detail::hardware_binary<T>) return detail::two_prod(a, b);
 #endif
   const T splitter = veltkamp_splitter<T>();
   auto split = [&](const T& x) {

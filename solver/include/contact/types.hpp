@@ -80,7 +80,7 @@ template <class F>
 // precision).
 template <class T>
 std::string round_trip_text(const T& x) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+  if constexpr (detail::hardware_binary<T>) {
     char text[64];
     std::snprintf(text, sizeof text, "%a", static_cast<double>(x));
     return text;

@@ -27,6 +27,12 @@ int precision_of() {
   return boost::math::tools::digits<T>();
 }
 
+// float or double: IEEE binary32 or binary64 in hardware, whose bit patterns
+// the fast paths read and step (std::bit_cast to an unsigned integer of the
+// same width). Every other type takes the generic path.
+template <class T>
+concept hardware_binary = std::is_same_v<T, float> || std::is_same_v<T, double>;
+
 // a + b == sum + error exactly, barring overflow (Knuth's TwoSum).
 template <class T>
 struct exact_pair {
@@ -152,10 +158,10 @@ T upper_neighbour_by_frexp(const T& x) {
 }
 
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 std::int64_t ordered_key(T x);
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 T from_ordered_key(std::int64_t k);
 
 // The neighbours of a finite x; they saturate at +-infinity instead of
@@ -164,7 +170,7 @@ T from_ordered_key(std::int64_t k);
 template <class T>
 T next_up(const T& x) {
   if (x >= (std::numeric_limits<T>::max)()) return std::numeric_limits<T>::infinity();
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return from_ordered_key<T>(ordered_key(x) + 1);
+  if constexpr (hardware_binary<T>) return from_ordered_key<T>(ordered_key(x) + 1);
   else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_next(x);
   else return upper_neighbour_by_frexp(x);
 }
@@ -172,7 +178,7 @@ T next_up(const T& x) {
 template <class T>
 T next_down(const T& x) {
   if (x <= -(std::numeric_limits<T>::max)()) return -std::numeric_limits<T>::infinity();
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return from_ordered_key<T>(ordered_key(x) - 1);
+  if constexpr (hardware_binary<T>) return from_ordered_key<T>(ordered_key(x) - 1);
   else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_prior(x);
   else return -upper_neighbour_by_frexp(T(-x));
 }
@@ -217,7 +223,7 @@ T square_root(const T& x) {
 // one place the bit-pattern code of the window, scaled<T>, the batch kernels
 // and the rounded mode reads them from.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 struct binary_layout {
   using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
   static constexpr bits sign = bits(1) << (sizeof(bits) * 8 - 1);
@@ -241,7 +247,7 @@ struct binary_layout {
 // at -O3, on release's operands); on bits it cannot. Other types take ?:.
 template <class T>
 T select(bool condition, const T& if_true, const T& if_false) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+  if constexpr (hardware_binary<T>) {
     using bits = typename binary_layout<T>::bits;
     const bits chosen = bits(0) - bits(condition);  // all ones or all zeros
     return std::bit_cast<T>(bits((std::bit_cast<bits>(if_true) & chosen) | (std::bit_cast<bits>(if_false) & ~chosen)));
@@ -253,7 +259,7 @@ T select(bool condition, const T& if_true, const T& if_false) {
 // binary32 and binary64 values as ordered integers (-0 and +0 both map to 0),
 // so that k representable values apart is k integers apart.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 std::int64_t ordered_key(T x) {
   using bits = typename binary_layout<T>::bits;
   constexpr bits sign = binary_layout<T>::sign;
@@ -262,7 +268,7 @@ std::int64_t ordered_key(T x) {
 }
 
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 T from_ordered_key(std::int64_t k) {
   using bits = typename binary_layout<T>::bits;
   constexpr bits sign = binary_layout<T>::sign;
@@ -273,7 +279,7 @@ T from_ordered_key(std::int64_t k) {
 // saturating at -+ the largest finite value: a finite x stays finite.
 template <class T>
 T ulp_steps(const T& x, long k) {
-  if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {
+  if constexpr (hardware_binary<T>) {
     const std::int64_t largest = ordered_key((std::numeric_limits<T>::max)());
     std::int64_t key = ordered_key(x) + k;
     key = key > largest ? largest : (key < -largest ? -largest : key);

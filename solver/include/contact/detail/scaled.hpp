@@ -34,7 +34,7 @@ struct scaled {
     using std::frexp;
     using std::isfinite;
     scaled r;
-    if constexpr (is_binary_hardware) {
+    if constexpr (hardware_binary<T>) {  // frexp and ldexp's common case on the bits
       // frexp of a normal m, on its bits: the exponent field set to that of [0.5, 1)
       using layout = binary_layout<T>;
       using bits = typename layout::bits;
@@ -61,7 +61,7 @@ struct scaled {
   // x * 2^shift, clamped so that huge shifts saturate to 0 or infinity.
   static T shifted(const T& x, long shift) {
     using std::ldexp;
-    if constexpr (is_binary_hardware) {
+    if constexpr (hardware_binary<T>) {  // frexp and ldexp's common case on the bits
       // ldexp of a normal x, on its bits: a normal result by moving the exponent
       // field, zero and infinity directly, a subnormal one by one multiplication
       using layout = binary_layout<T>;
@@ -137,9 +137,6 @@ struct scaled {
 
  private:
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
-
-  // binary32 and binary64 take frexp and ldexp's common case on their bits
-  static constexpr bool is_binary_hardware = std::is_same_v<T, float> || std::is_same_v<T, double>;
 };
 
 // a * b as an exact pair high + low, by two_prod of the significands: their

@@ -65,7 +65,7 @@ static_assert(plain_window<double> == 240 && plain_window<float> == 24);
 // their values, so the test is one unsigned comparison; zero, subnormals, NaN
 // and infinity all fail it.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 bool magnitude_inside_plain_window(const T& x) {
   using bits = typename binary_layout<T>::bits;
   constexpr bits magnitude = ~binary_layout<T>::sign;
@@ -81,7 +81,7 @@ bool magnitude_inside_plain_window(const T& x) {
 
 // floor(log2 |x|) for a finite non-zero binary32 or binary64 x, subnormals included.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 int binade_of(const T& x) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
@@ -105,7 +105,7 @@ int binade_of(const T& x) {
 // (double) or 2^125 (float): from there up 2 (1 + phi) could overflow, and
 // phi is in no band.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 struct phi_bands {
   struct band {
     int top, lowest;
@@ -168,7 +168,7 @@ struct phi_bands {
 // phi > 0, as a test of bits. Other types than binary32 and binary64 have no
 // such shortcut and take safe_window's general test.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 bool inside_plain_window(const T& u, const T& dy, const T& phi) {
   return magnitude_inside_plain_window(u) && magnitude_inside_plain_window(dy) && magnitude_inside_plain_window(phi) &&
          !std::signbit(phi);
@@ -184,7 +184,7 @@ bool inside_plain_window(const T& u, const T& dy, const T& phi) {
 // well inside; the rest of the plain window takes the band route, whose plain
 // path gives the same s.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 inline constexpr int common_window = std::is_same_v<T, double> ? 128 : 16;
 static_assert(common_window<double> <= plain_window<double> && common_window<float> <= plain_window<float>);
 static_assert(std::has_single_bit(unsigned(2 * common_window<double>)) &&
@@ -201,7 +201,7 @@ inline constexpr typename binary_layout<T>::bits common_window_width =  // 2C bi
 
 // The OR of the three offsets; the input lies in the window iff it is below common_window_width.
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 inline typename binary_layout<T>::bits common_window_offsets(const T& abs_u, const T& abs_dy, const T& phi) {
   using bits = typename binary_layout<T>::bits;
   constexpr bits lowest = common_window_lowest<T>;
@@ -210,7 +210,7 @@ inline typename binary_layout<T>::bits common_window_offsets(const T& abs_u, con
 }
 
 template <class T>
-  requires(std::is_same_v<T, float> || std::is_same_v<T, double>)
+  requires hardware_binary<T>
 bool inside_common_window(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   return common_window_offsets(fabs(u), fabs(dy), phi) < common_window_width<T>;
