@@ -310,6 +310,52 @@ TEST(Batch, ExactDecisionAnswersTheLanesNearTheContactBoundary) {
   }
 }
 
+// Within 8 ulps of u = dy (phi - 1), at physical magnitudes (inside the window)
+// and at 2^+-500 (in phi's bands): nearly every lane needs the exact decision.
+lanes<double> near_the_contact_boundary(std::uint64_t seed, int count) {
+  harness::seeded_source source(seed);
+  using harness::distribution;
+  using shape = distribution::shape;
+  const distribution dy_physical{shape::log10, -7, -3, 1}, phi_physical{shape::log10, -3, 6, 1},
+      dy_wide{shape::log2, -500, 500, 1}, phi_wide{shape::log2, -500, 500, 1};
+  lanes<double> in;
+  for (int i = 0; i < count; ++i) {
+    const bool wide = i % 2 == 1;
+    const auto x = harness::contact_release_boundary<double>(source, wide ? dy_wide : dy_physical,
+                                                             wide ? phi_wide : phi_physical, 8);
+    in.add(x.u, x.dy, x.phi);
+  }
+  return in;
+}
+
+TEST(Batch, LanesNearTheContactBoundaryEqualScalarStableBitForBit) {
+  expect_same_as_scalar(near_the_contact_boundary(33, 40000));
+}
+
+#if defined(__AVX512F__)
+// The AVX-512 rescaled pass decides those lanes itself (decide_eight's exact
+// sum), as solve_stable does, instead of leaving them to the scalar path.
+TEST(Batch, RescaledPassDecidesTheLanesNearTheContactBoundaryInVectorCode) {
+  const auto in = near_the_contact_boundary(34, 40000);
+  const auto n = static_cast<std::ptrdiff_t>(in.u.size());
+  std::vector<double> s(in.u.size());
+  std::vector<int> which(in.u.size());
+  long answered = 0, mismatches = 0;
+  for (std::ptrdiff_t i = 0; i + 8 <= n; i += 8) {
+    const __mmask8 done =
+        contact::batch_detail::rescaled_eight(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), i, 0);
+    for (int k = 0; k < 8; ++k) {
+      if (!(done >> k & 1)) continue;
+      ++answered;
+      const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
+      mismatches += !identical(scalar.s, s[i + k]) || static_cast<int>(scalar.which) != which[i + k];
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(answered, n * 9 / 10) << "of " << n;
+}
+#endif
+
 TEST(Batch, RescaledLanesTakePhiBandsAsSolveStableDoes) {
   expect_band_lanes_solved_in_vector_code(band_inputs<double>(21, 200));
   expect_band_lanes_solved_in_vector_code(band_inputs<float>(22, 200));
