@@ -342,10 +342,13 @@ TEST(Batch, RescaledPassDecidesTheLanesNearTheContactBoundaryInVectorCode) {
   std::vector<int> which(in.u.size());
   long answered = 0, mismatches = 0;
   for (std::ptrdiff_t i = 0; i + 8 <= n; i += 8) {
-    const __mmask8 done =
-        contact::batch_detail::rescaled_eight(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), i, 0);
+    const auto answers = contact::batch_detail::rescaled_eight(_mm512_loadu_si512(in.u.data() + i),
+                                                               _mm512_loadu_si512(in.dy.data() + i),
+                                                               _mm512_loadu_si512(in.phi.data() + i));
+    _mm512_storeu_pd(s.data() + i, answers.s);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which.data() + i), answers.which);
     for (int k = 0; k < 8; ++k) {
-      if (!(done >> k & 1)) continue;
+      if (!(answers.answered >> k & 1)) continue;
       ++answered;
       const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
       mismatches += !identical(scalar.s, s[i + k]) || static_cast<int>(scalar.which) != which[i + k];
