@@ -48,20 +48,6 @@ std::string reference_text(const reference::certified& exact) {
   return text;
 }
 
-// Whether the exact root lies beyond T's largest finite value, on the side of
-// `positive`: infinity is then an acceptable answer (even where the root rounds
-// to the largest finite value). The reference's s has a few hundred bits, too
-// few to tell a root beyond the largest value by less than that from the value
-// itself; complementarity tells it: release has s > dy, impact s < dy.
-template <class T>
-bool beyond_range(const reference::certified& exact, const T& dy, bool positive) {
-  const T largest = (std::numeric_limits<T>::max)();
-  if (positive && only_infinity_on_its_side(exact.which, dy)) return true;
-  if (!positive && exact.which == contact_case::impact && dy == -largest) return true;
-  const reference::real bound = reference::exactly(largest, mpfr_get_prec(exact.s.get()));
-  return mpfr_cmpabs(exact.s.get(), bound.get()) > 0 && (mpfr_sgn(exact.s.get()) > 0) == positive;
-}
-
 // What a differential check saw: the stable algorithm's error and the exact
 // case (case invalid for an invalid input). The libFuzzer targets feed them
 // back as coverage, so that campaigns climb towards the largest stable error.
@@ -113,14 +99,12 @@ reference::certified certified_root(const char* target, const input<T>& x) {
   return exact;
 }
 
-// The ulp error of an answer; infinity for a root beyond the largest finite T
-// (even one that rounds to it) is right, error 0.
+// The ulp error of an answer, as every checker grades it: infinity is right
+// (error 0) for a root that rounds to it, and for release with dy the largest
+// finite T (reference::accepted_ulp_error).
 template <class T>
 double error_of(const solution<T>& r, const reference::certified& exact, const T& dy) {
-  using std::isinf;
-  const double ulps = reference::ulp_error<T>(r.s, exact);
-  if (isinf(r.s) && ulps != 0 && beyond_range<T>(exact, dy, r.s > 0)) return 0;
-  return ulps;
+  return reference::accepted_ulp_error<T>(r.s, exact, dy);
 }
 
 template <class T>

@@ -108,6 +108,31 @@ TEST(Cases, ReleaseWithTheLargestDyAnswersInfinity) {
   EXPECT_EQ(reference::ulp_error<double>(got.s, exact), inf);
 }
 
+// A release root between the largest double and the threshold of rounding to
+// infinity (the largest plus half its ulp) rounds to the largest double; its
+// computed value, a few ulps off, can lie beyond the threshold. Stable answers
+// the largest double there: the exact sign of R at the threshold decides, not
+// R at the largest double (which answered +infinity, an infinite error, before).
+// Found near the threshold by a search of release inputs.
+TEST(Cases, ReleaseRootJustBelowTheThresholdOfInfinityAnswersTheLargestDouble) {
+  const double largest = std::numeric_limits<double>::max();
+  const std::array<std::array<double, 3>, 5> near_threshold = {{
+      {-0x1.944d435081324p+1017, 0x1.a29e835c0e448p+998, 0x1.7a398262b99dep+50},
+      {-0x1.fa2cbc99b7b9bp+1003, 0x1.df508714e112p+1009, 0x1.241abfd8639b9p+28},
+      {-0x1.210ded927c697p+1019, 0x1.bfcc2c9e2a78p+1000, 0x1.42dc66249ff68p+46},
+      {0.0, 0x1.b02ba83f96baap+995, 0x1.674f6afc931bp+56},
+      {-0x1.5d10799f0de3cp+1021, 0x1.794d1e5584965p+994, 0x1.8710f8cf6330ep+58},
+  }};
+  for (const auto& [u, dy, phi] : near_threshold) {
+    const auto exact = reference::solve(u, dy, phi);
+    ASSERT_TRUE(exact.is_certified);
+    EXPECT_EQ(reference::rounded_to_double(exact.s), largest) << std::hexfloat << u << " " << dy << " " << phi;
+    const auto got = solve_stable(u, dy, phi);
+    EXPECT_EQ(got.which, contact_case::release);
+    EXPECT_EQ(got.s, largest) << std::hexfloat << u << " " << dy << " " << phi;
+  }
+}
+
 TEST(Types, EveryNamedTypeDispatchesAndAnUnknownNameDoesNot) {
   int called = 0;
   const auto count_call = [&](auto) { ++called; };

@@ -6,8 +6,9 @@
 //   - the case is the exact case, the sign of R(dy) (docs/equations.md,
 //     section 2): of u + dy for dy <= 0, of u + dy - phi dy for dy > 0;
 //   - s lies on its case's side of dy (for solve_rounded weakly: s may be dy);
-//   - s is never NaN, and infinite only where s* lies beyond the largest
-//     finite value, on the same side;
+//   - s is never NaN, and infinite only where s* rounds to that infinity (it
+//     lies at or beyond the largest finite value plus half its ulp), or for
+//     release with dy the largest finite value;
 //   - s is as accurate as the method promises: for solve_stable within its
 //     branch's bound of proofs/claimed_bounds.txt carried over to the format's
 //     precision (below); for solve_rounded, s* rounded to nearest, ties to
@@ -216,9 +217,14 @@ class checker {
       return "s on the wrong side of dy";
     }
     if (isinf(s)) {
-      const auto largest = exact::exactly<Integer>(double((std::numeric_limits<T>::max)()));
-      const bool root_beyond = s > 0 ? x.residual_sign(largest) < 0 : x.residual_sign(-largest) > 0;
-      if (!root_beyond) return "infinite, but the root is not beyond the largest finite value";
+      // infinity is the root rounded only from the threshold, the largest value
+      // plus half its ulp, on (a tie there goes to the even neighbour, infinity);
+      // release with dy the largest value has only infinity on its side
+      const double half_ulp = std::ldexp(1.0, std::numeric_limits<T>::max_exponent - precision - 1);
+      const auto threshold = exact::exactly<Integer>(double((std::numeric_limits<T>::max)()) + half_ulp);
+      const bool rounds_to_infinity = s > 0 ? x.residual_sign(threshold) <= 0 : x.residual_sign(-threshold) >= 0;
+      if (!rounds_to_infinity && !(s > 0 && only_infinity_on_its_side(result.which, dy)))
+        return "infinite, but the root rounds to a finite value";
     }
     if (promise_ == accuracy::correctly_rounded) {
       if (!format::is_rounded_root(x, s)) return "not the root rounded to nearest";

@@ -152,19 +152,27 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   }
 }
 
-// Whether the (A.32) root lies beyond the largest finite T. R increases, so it
-// does exactly when R(max) < 0, that is (release: s > dy, (A.23))
-// max^2 + u max - phi dy^2 < 0: the sign of an exact sum of products, each
-// split into exact pairs on scaled<T>, where nothing overflows.
+// Whether the (A.32) root rounds to +infinity: whether it lies at or beyond
+// the threshold t = max + h, h half the ulp of the largest finite T (at t
+// itself the tie goes to the even neighbour, 2^max_exponent). R increases, so
+// it does exactly when R(t) <= 0, that is (release: s > dy, (A.23))
+// max^2 + 2 h max + h^2 + u max + u h - phi dy^2 <= 0: the sign of an exact
+// sum of products, each split into exact pairs on scaled<T>, where nothing
+// overflows (the products by powers of two of h are exact).
 template <class T>
-bool release_root_is_beyond_largest(const T& u, const T& dy, const T& phi) {
+bool release_root_rounds_to_infinity(const T& u, const T& dy, const T& phi) {
   using S = scaled<T>;
-  const S largest((std::numeric_limits<T>::max)()), dy_s(dy);
-  const auto square = exact_product(largest, largest), linear = exact_product(S(u), largest);
+  using std::ldexp;
+  const T largest_value = (std::numeric_limits<T>::max)();
+  const S largest(largest_value), half_ulp(ldexp(T(1), std::numeric_limits<T>::max_exponent - precision_of<T>() - 1));
+  const S u_s(u), dy_s(dy);
+  const auto square = exact_product(largest, largest), linear = exact_product(u_s, largest);
   const auto phi_dy = exact_product(S(phi), dy_s);
   const auto high = exact_product(phi_dy[0], dy_s), low = exact_product(phi_dy[1], dy_s);
-  const std::array<S, 8> terms = {square[0], square[1], linear[0], linear[1], -high[0], -high[1], -low[0], -low[1]};
-  return sign_of_exact_sum(terms) < 0;
+  const std::array<S, 11> terms = {square[0], square[1], largest * (half_ulp + half_ulp), half_ulp * half_ulp,
+                                   linear[0], linear[1], u_s * half_ulp,
+                                   -high[0], -high[1], -low[0], -low[1]};
+  return sign_of_exact_sum(terms) <= 0;
 }
 
 template <bool plain, class T, class Formula>
@@ -273,15 +281,17 @@ inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& u
     using S = scaled<T>;
     const S root = stable_form::release(S(u), S(dy), S(phi));
     T s = clamped_above_positive(root.value(), dy);
-    // A root a few ulps below the largest T can be computed beyond it and round
-    // to infinity; the largest T is then the nearer, and only the exact sign of
-    // R(largest) tells. A computed root from 2^(max_exponent + 1) up (a scaled
-    // exponent beyond max_exponent + 1) needs no such test: release's error
-    // bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
+    // A root a few ulps below the threshold of rounding to infinity (the
+    // largest T plus half its ulp) can be computed beyond it and round to
+    // infinity; the largest T is then the nearer, and only the exact sign of R
+    // at the threshold tells. A computed root from 2^(max_exponent + 1) up (a
+    // scaled exponent beyond max_exponent + 1) needs no such test: release's
+    // error bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
+    // With dy the largest T, release's side s > dy holds infinity alone.
     // (Inside the plain window the root is below 2^(2E + 1), far from the largest T.)
     using std::isinf;
     if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 &&
-        !release_root_is_beyond_largest(u, dy, phi))
+        !only_infinity_on_its_side(contact_case::release, dy) && !release_root_rounds_to_infinity(u, dy, phi))
       s = (std::numeric_limits<T>::max)();
     return {s, contact_case::release};
   }
