@@ -116,19 +116,48 @@ TEST(Reference, MinusInfinityIsExactOnlyForARootBelowMinusTheLargestDouble) {
   EXPECT_EQ(reference::ulp_error(-inf, root_at(1.0, 1024)), inf);
 }
 
-// Release with dy the largest double answers +infinity by design (the only
-// value on its side of dy); the checkers grade answers by accepted_ulp_error.
+// Release with dy the largest finite T answers +infinity by design (the only
+// value on its side of dy); the checkers grade answers by accepted_ulp_error,
+// whatever T they check (the fuzzers check float, double, long double and
+// float128).
+template <class T>
+reference::certified release_root_at_the_largest() {
+  reference::certified c{reference::exactly((std::numeric_limits<T>::max)(), 320), reference::real(320),
+                         reference::real(320), contact_case::release, true};
+  return c;
+}
+
+template <class T>
+void expect_forced_infinity_exact() {
+  const T largest = (std::numeric_limits<T>::max)(), infinity = std::numeric_limits<T>::infinity();
+  const auto root = release_root_at_the_largest<T>();
+  EXPECT_EQ(reference::ulp_error<T>(infinity, root), inf);
+  EXPECT_EQ(reference::accepted_ulp_error<T>(infinity, root, largest), 0.0);
+}
+
+template <class T>
+void expect_ulp_error_elsewhere() {
+  using std::nextafter;
+  const T largest = (std::numeric_limits<T>::max)(), infinity = std::numeric_limits<T>::infinity();
+  const auto root = release_root_at_the_largest<T>();
+  EXPECT_EQ(reference::accepted_ulp_error<T>(infinity, root, T(largest / 2)), inf);
+  EXPECT_EQ(reference::accepted_ulp_error<T>(T(-infinity), root, largest), inf);
+  EXPECT_EQ(reference::accepted_ulp_error<T>(T(largest / 2), root, largest),
+            reference::ulp_error<T>(T(largest / 2), root));
+}
+
 TEST(Reference, AcceptedErrorCountsReleasesForcedInfinityAsExact) {
-  const auto root_is_the_largest_double = root_at(largest, 0);  // a release root
-  EXPECT_EQ(reference::ulp_error(inf, root_is_the_largest_double), inf);
-  EXPECT_EQ(reference::accepted_ulp_error(inf, root_is_the_largest_double, largest), 0.0);
+  expect_forced_infinity_exact<float>();
+  expect_forced_infinity_exact<double>();
+  expect_forced_infinity_exact<long double>();
+  expect_forced_infinity_exact<boost::multiprecision::float128>();
 }
 
 TEST(Reference, AcceptedErrorIsTheUlpErrorEverywhereElse) {
-  const auto root_is_the_largest_double = root_at(largest, 0);
-  EXPECT_EQ(reference::accepted_ulp_error(inf, root_is_the_largest_double, std::nextafter(largest, 0.0)), inf);
-  EXPECT_EQ(reference::accepted_ulp_error(-inf, root_is_the_largest_double, largest), inf);
-  EXPECT_EQ(reference::accepted_ulp_error(std::nextafter(largest, 0.0), root_is_the_largest_double, largest), 1.0);
+  expect_ulp_error_elsewhere<float>();
+  expect_ulp_error_elsewhere<double>();
+  expect_ulp_error_elsewhere<long double>();
+  expect_ulp_error_elsewhere<boost::multiprecision::float128>();
 }
 
 TEST(Reference, ANaNAnswerHasANaNError) {
