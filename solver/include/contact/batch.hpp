@@ -412,33 +412,17 @@ CONTACT_BATCH_INLINE eight_decision filter_eight(__m512d dy, const eight_terms& 
 }
 
 // lane<.., true>'s exact decision on eight lanes: whether u + dy - phi dy >= 0
-// exactly, phi dy as two_prod(phi_factor, dy_factor)'s exact pair and the
-// sign that of detail::leading_component_of_exact_sum's expansion of the four
-// terms, built by the same two_sums in the same order (zeros kept, no branch).
+// exactly, phi dy as two_prod(phi_factor, dy_factor)'s exact pair, the sign
+// that of detail::leading_component_of_exact_sum itself, run on the vectors
+// (GCC's vector arithmetic and ?:): the same two_sums in the same order.
 // Exact wherever lane()'s is: in the window and on the band-moved operands.
 CONTACT_BATCH_INLINE __mmask8 exact_sum_nonnegative_eight(__m512d u, __m512d dy, __m512d phi_factor,
                                                           __m512d dy_factor) {
-  const __m512d zero = _mm512_setzero_pd(), sign_bit = _mm512_set1_pd(-0.0);
   const __m512d high = _mm512_mul_pd(phi_factor, dy_factor);
   const __m512d low = _mm512_fmsub_pd(phi_factor, dy_factor, high);  // detail::two_prod
-  const __m512d terms[4] = {u, dy, _mm512_xor_pd(high, sign_bit), _mm512_xor_pd(low, sign_bit)};
-  auto two_sum = [](__m512d a, __m512d b, __m512d& error) {  // detail::two_sum
-    const __m512d sum = _mm512_add_pd(a, b);
-    const __m512d b_virtual = _mm512_sub_pd(sum, a);
-    const __m512d a_virtual = _mm512_sub_pd(sum, b_virtual);
-    error = _mm512_add_pd(_mm512_sub_pd(a, a_virtual), _mm512_sub_pd(b, b_virtual));
-    return sum;
-  };
-  __m512d expansion[4];
-  for (int i = 0; i < 4; ++i) {
-    __m512d carry = terms[i];
-    for (int j = 0; j < i; ++j) carry = two_sum(carry, expansion[j], expansion[j]);
-    expansion[i] = carry;
-  }
-  __m512d leading = zero;
-  for (int i = 0; i < 4; ++i)
-    leading = _mm512_mask_mov_pd(leading, _mm512_cmp_pd_mask(expansion[i], zero, _CMP_NEQ_UQ), expansion[i]);
-  return _mm512_cmp_pd_mask(leading, zero, _CMP_NLT_UQ);  // !(leading < 0)
+  const __m512d terms[4] = {u, dy, -high, -low};
+  const __m512d leading = detail::leading_component_of_exact_sum(terms);
+  return _mm512_cmp_pd_mask(leading, _mm512_setzero_pd(), _CMP_NLT_UQ);  // !(leading < 0)
 }
 
 // The filter's decision, completed by the exact one on the lanes of `lanes`

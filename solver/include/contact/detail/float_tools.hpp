@@ -101,7 +101,7 @@ T fused_multiply_add(const T& a, const T& b, const T& c) {
 // overflows. The zeros are kept rather than eliminated: a fixed number of
 // two_sums and selects, without the branches on each error's zero that cost
 // more, near the contact boundary, than they save, and a form the batch
-// kernels vectorise.
+// kernels vectorise (the AVX-512 one calls it on vectors of eight lanes).
 template <class T, int N>
 T leading_component_of_exact_sum(const T (&terms)[N]) {
   T expansion[N];
@@ -117,7 +117,7 @@ T leading_component_of_exact_sum(const T (&terms)[N]) {
     }
     expansion[i] = carry;
   }
-  T leading = 0;
+  T leading{};  // zero, for the scalar types and for a GCC vector of lanes alike
 #pragma GCC unroll 16
   for (int i = 0; i < N; ++i) leading = expansion[i] != 0 ? expansion[i] : leading;
   return leading;
