@@ -79,7 +79,7 @@ std::optional<std::string> residual(const probe_result<T>& p, double max_ulp) {
   if (std::isnan(p.s)) return "s is NaN for a valid input";
   if (!isfinite(p.s)) {
     if (contact::reference::accepted_ulp_error<T>(p.s, *p.exact, p.x.dy) == 0) return std::nullopt;
-    return "s is infinite, the root is not beyond T's range";
+    return "s is infinite, but the root does not round to infinity";
   }
   if (root_within(p.s, p.x.u, p.x.dy, p.x.phi, max_ulp)) return std::nullopt;
   return "the exact residual R keeps its sign across s -+ " + number_text(max_ulp) + " ulps: the root is not there";

@@ -675,9 +675,9 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     const eight_answers answers = answer_eight(u, dy, phi, phi, dy, l.terms, decision);
     _mm512_storeu_pd(s_out + i, answers.s);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i), answers.which);
-    // the lanes outside, noted without a branch (where they are common,
-    // whether a vector holds one is a coin toss); solved out of line, the hot
-    // loop stays short
+    // the lanes outside, noted for solve_pending, out of line, so that the hot
+    // loop stays short (the branches are never taken on physical inputs, and
+    // nearly always on the wide scenes, where most vectors hold such a lane)
     const __mmask8 outside = __mmask8(~l.inside);
     if (outside != 0) {
       if (outside == 0xFF)

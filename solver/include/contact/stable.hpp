@@ -163,8 +163,8 @@ template <class T>
 bool release_root_rounds_to_infinity(const T& u, const T& dy, const T& phi) {
   using S = scaled<T>;
   using std::ldexp;
-  const T largest_value = (std::numeric_limits<T>::max)();
-  const S largest(largest_value), half_ulp(ldexp(T(1), std::numeric_limits<T>::max_exponent - precision_of<T>() - 1));
+  const S largest((std::numeric_limits<T>::max)());
+  const S half_ulp(ldexp(T(1), std::numeric_limits<T>::max_exponent - precision_of<T>() - 1));
   const S u_s(u), dy_s(dy);
   const auto square = exact_product(largest, largest), linear = exact_product(u_s, largest);
   const auto phi_dy = exact_product(S(phi), dy_s);
@@ -317,19 +317,9 @@ solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
   return solve_scaled(u, dy, phi);
 }
 
-// (A.2) is homogeneous in (u, dy): s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi),
-// with the same case. With phi > 0 finite, finite u and dy move by one exact
-// power of two to where phi's band (phi_bands) leaves room for them, the plain
-// path solves them, and s moves back. There plain T rounds as the unbounded
-// exponent range of scaled<T> does (docs/equations.md, section 6), and
-// scaled<T> commutes with powers of two, so this is solve_cases<false>'s
-// answer wherever s is normal or zero both before and after it moves back (the
-// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever its
-// neighbour s is). Where either s would be subnormal or 2^-k s overflow,
-// solve_cases<false> rounds it once, as before. Free flight is answered first,
-// for any finite u and dy. u and dy too far apart for the band take the
-// scaled path; phi = 0, phi from the end of the last band up and invalid
-// input go on to solve_anywhere.
+// The band route's exit for phi = 0, phi from the end of the last band up and
+// invalid input (solve_by_phi_band, below), out of line and by value, so that
+// the route reaches it by a tail call.
 template <class T>
   requires detail::hardware_binary<T>
 [[gnu::noinline]] solution<T> solve_outside_bands(T u, T dy, T phi) {
