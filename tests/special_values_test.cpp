@@ -207,5 +207,22 @@ TEST(StableWitnesses, EachWitnessIsCertifiedInItsBranchAndWithinTheClaimedBound)
     EXPECT_GE(witnesses[branch], 1) << "no witness for " << branch;
 }
 
+// The input on which the uncompensated (A.30) form, -((u + 2 push) + root) /
+// (2 (1 + phi)), lost 4.49 ulps: phi near 2^53, where 1 + phi rounds a tie, and
+// the numerator's three roundings each cost an ulp of s. The compensated form
+// takes exactly those roundings out; what is left is the root's share and the
+// last rounding.
+TEST(StableWitnesses, CompensatedImpactIsWithinAnUlpWhereThePlainFormLostFourAndAHalf) {
+  const double u = 0x1.fb6f56b79d768p+4, dy = -0x1.ffffe7b4a1fb1p+3, phi = 0x1.00062a6b49593p+53;
+  const auto exact = reference::solve(u, dy, phi);
+  ASSERT_TRUE(exact.is_certified);
+  const double gap = -dy, push = phi * gap;
+  const double plain = -((u + 2 * push) + std::sqrt(std::fma(u, u, 4 * (push * (u - gap))))) / (2 * (1 + phi));
+  EXPECT_GT(reference::ulp_error(plain, exact), 4.4);
+  const auto r = solve_stable(u, dy, phi);
+  EXPECT_EQ(r.which, contact_case::impact);
+  EXPECT_LE(reference::ulp_error(r.s, exact), 1.0);
+}
+
 }  // namespace
 }  // namespace contact::testing

@@ -1,8 +1,8 @@
 # Branch: solve_rounded<double>, case (A.30), rounded_form::impact_step, the Newton step
 # of the correctly rounded mode's fast path:
-#   gap = -dy;  push = phi * gap;  root = sqrt(fma(u, u, 4 * (push * (u - gap))));
-#   denominator = 1 + phi;  s0 = -((u + 2 * push) + root) / (2 * denominator)
-#   (stable_form::impact);  inverse = 1 / root;
+#   [s0, root] = stable_form::impact_with_square_root(u, -dy, phi): stable_form::impact's
+#   s0 and the square root of its discriminant, root = sqrt(fma(u, u, 4 * (push * (u - gap))));
+#   denominator = 1 + phi;  inverse = 1 / root;
 #   w = two_sum(s0, u);  a = product(s0, w.high);  a_low = s0 * w.low + a.low;
 #   g = two_sum(dy, -s0);  k = product(g.high, g.high);  k_low = 2 * g.high * g.low + k.low;
 #   m = product(phi, k.high);  m_low = phi * k_low + m.low;

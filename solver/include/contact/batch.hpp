@@ -177,7 +177,8 @@ CONTACT_BATCH_INLINE bits_t<T> band_rescaling(bits_t<T> u_bits, bits_t<T> dy_bit
 }
 
 // s moved back by the shift: exact where s is 0 or normal both before and
-// after the move; `normal` is all ones there, else zero. The band boxes bound
+// after the move (before it, above the least normal binade, as solve_stable's
+// moved_back asks); `normal` is all ones there, else zero. The band boxes bound
 // the intermediates, not s: a subnormal s rounded where scaled<T> would not
 // (and an infinite one has no exponent to move), so, as in solve_stable, the
 // scalar path rounds those once.
@@ -188,7 +189,7 @@ CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
   const U abs_s = s_bits & ~sign_mask<T>;
   const U is_zero = mask<T>(abs_s == 0);
   using layout = detail::binary_layout<T>;
-  normal = (mask<T>(layout::is_normal(abs_s)) & mask<T>(layout::is_normal(U(abs_s - shift)))) | is_zero;
+  normal = (mask<T>(layout::is_normal_above_least_binade(abs_s)) & mask<T>(layout::is_normal(U(abs_s - shift)))) | is_zero;
   return std::bit_cast<T>(U(s_bits - (shift & ~is_zero)));
 }
 
@@ -278,16 +279,33 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const U is_contact = contact_before & stays;
   const U is_release = contact_before ^ is_contact;
 
-  // One division per lane: numerator and denominator of the lane's case.
+  // One division per lane: numerator and denominator of the lane's case, and
+  // for impact the reciprocal of its denominator, which stable_form::impact's
+  // compensated quotient takes (the same operations in the same order).
   const U rationalised = mask<T>(u > 0);
-  const T one_plus_phi = T(1) + phi;
+  const auto one_plus_phi = detail::two_sum(T(1), phi);
+  const T impact_denominator = T(2) * one_plus_phi.high;
   T numerator = pick(rationalised, T(T(2) * z), T(root - u));  // release
   T denominator = pick(rationalised, T(u + root), T(2));
   numerator = pick(is_contact, std::fma(phi_factor, T(2) * dy_factor, -u), numerator);
-  denominator = pick(is_contact, one_plus_phi, denominator);
-  numerator = pick(is_impact, T(-((u + T(2) * x) + root)), numerator);
-  denominator = pick(is_impact, T(T(2) * one_plus_phi), denominator);
-  T s = numerator / denominator;
+  denominator = pick(is_contact, one_plus_phi.high, denominator);
+  numerator = pick(is_impact, T(1), numerator);
+  denominator = pick(is_impact, impact_denominator, denominator);
+  const T quotient_or_inverse = numerator / denominator;
+  const T push_error = std::fma(phi_factor, std::fabs(dy_factor), -x);
+  const auto head = detail::two_sum(u, T(T(2) * x));
+  const auto impact_numerator = detail::two_sum(head.high, root);
+  const T numerator_low = impact_numerator.low + T(head.low + T(2) * push_error);
+  const T inverse = quotient_or_inverse;
+  const T quotient = impact_numerator.high * inverse;
+  const T residual = std::fma(-quotient, impact_denominator, impact_numerator.high);
+  // stable_form::impact's products with a subnormal phi from normal factors:
+  // 2 phi q as (2 phi 2^64) (q 2^-64), phi 2^64 being phi_factor
+  const U phi_moved = mask<T>(phi_factor != phi);
+  const T twice_low = pick(phi_moved, T(T(2) * phi_factor), T(one_plus_phi.low + one_plus_phi.low));
+  const T quotient_factor = pick(phi_moved, T(quotient * T(0x1p-64)), quotient);
+  const T correction = std::fma(-quotient_factor, twice_low, T(residual + numerator_low));
+  T s = pick(is_impact, T(-std::fma(correction, inverse, quotient)), quotient_or_inverse);
 
   // The clamps of solve_stable, as one interval per case: [-u, next_down(dy)]
   // for impact (-u < dy there, so the order of solve_stable's two tests does
@@ -451,7 +469,7 @@ CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d p
   const __m512d x = terms.x, z = terms.z, root = terms.root;
   const __mmask8 no_contact_before = terms.no_contact_before, contact_before = decision.contact_before;
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0),
-                minus_two = _mm512_set1_pd(-2.0), sign_bit = _mm512_set1_pd(-0.0);
+                sign_bit = _mm512_set1_pd(-0.0);
   const __m512i one_bit = _mm512_set1_epi64(1);
   // lane()'s !(a <= 0) is the unordered predicate NLE
   const __mmask8 is_free = _mm512_mask_cmp_pd_mask(no_contact_before, terms.a, zero, _CMP_LE_OQ);
@@ -459,15 +477,35 @@ CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d p
   const __mmask8 is_contact = contact_before & decision.stays;
   const __mmask8 is_release = contact_before & ~decision.stays;
   const __mmask8 rationalised = _mm512_cmp_pd_mask(u, zero, _CMP_GT_OQ);
-  const __m512d one_plus_phi = _mm512_add_pd(one, phi);
+  // lane()'s one division: for impact, the reciprocal of the denominator,
+  // and then stable_form::impact's compensated quotient (detail::two_sum run
+  // on the vectors themselves, as GCC's vector arithmetic allows)
+  const auto one_plus_phi = detail::two_sum(one, phi);
+  const __m512d impact_denominator = _mm512_mul_pd(two, one_plus_phi.high);
   __m512d numerator = _mm512_mask_blend_pd(rationalised, _mm512_sub_pd(root, u), _mm512_mul_pd(two, z));
   __m512d denominator = _mm512_mask_blend_pd(rationalised, two, _mm512_add_pd(u, root));
   numerator = _mm512_mask_blend_pd(is_contact, numerator, _mm512_fmsub_pd(phi_factor, _mm512_mul_pd(two, dy_factor), u));
-  denominator = _mm512_mask_blend_pd(is_contact, denominator, one_plus_phi);
-  // -N / (2 (1 + phi)) as N / (-2 (1 + phi)): the same rounding, one negation fewer
-  numerator = _mm512_mask_blend_pd(is_impact, numerator, _mm512_add_pd(_mm512_add_pd(u, _mm512_mul_pd(two, x)), root));
-  denominator = _mm512_mask_blend_pd(is_impact, denominator, _mm512_mul_pd(minus_two, one_plus_phi));
-  __m512d s = _mm512_div_pd(numerator, denominator);
+  denominator = _mm512_mask_blend_pd(is_contact, denominator, one_plus_phi.high);
+  numerator = _mm512_mask_blend_pd(is_impact, numerator, one);
+  denominator = _mm512_mask_blend_pd(is_impact, denominator, impact_denominator);
+  const __m512d quotient_or_inverse = _mm512_div_pd(numerator, denominator);
+  const __m512d push_error = _mm512_fmsub_pd(phi_factor, _mm512_andnot_pd(sign_bit, dy_factor), x);
+  const auto head = detail::two_sum(u, _mm512_mul_pd(two, x));
+  const auto impact_numerator = detail::two_sum(head.high, root);
+  const __m512d numerator_low =
+      _mm512_add_pd(impact_numerator.low, _mm512_add_pd(head.low, _mm512_mul_pd(two, push_error)));
+  const __m512d inverse = quotient_or_inverse;
+  const __m512d quotient = _mm512_mul_pd(impact_numerator.high, inverse);
+  // fma(-q, b, c) as fnmadd, -fma(a, b, c) as fnmsub: negations are exact, so the same roundings
+  const __m512d residual = _mm512_fnmadd_pd(quotient, impact_denominator, impact_numerator.high);
+  // lane()'s products with a subnormal phi from normal factors, phi_factor being phi 2^64
+  const __mmask8 phi_moved = _mm512_cmp_pd_mask(phi_factor, phi, _CMP_NEQ_UQ);
+  const __m512d twice_low = _mm512_mask_blend_pd(phi_moved, _mm512_add_pd(one_plus_phi.low, one_plus_phi.low),
+                                                 _mm512_mul_pd(two, phi_factor));
+  const __m512d quotient_factor =
+      _mm512_mask_mul_pd(quotient, phi_moved, quotient, _mm512_set1_pd(0x1p-64));
+  const __m512d correction = _mm512_fnmadd_pd(quotient_factor, twice_low, _mm512_add_pd(residual, numerator_low));
+  __m512d s = _mm512_mask_blend_pd(is_impact, quotient_or_inverse, _mm512_fnmsub_pd(correction, inverse, quotient));
   // lane()'s clamps: max and min give s < lower ? lower : s and s > upper ? upper : s (s is finite here)
   const __m512d minus_u = _mm512_xor_pd(u, sign_bit);
   const __m512d away_from_zero = _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(dy), one_bit));
@@ -550,7 +588,12 @@ CONTACT_BATCH_INLINE rescaled_answers rescaled_eight(__m512i u_bits, __m512i dy_
   const __m512i s_bits = _mm512_castpd_si512(s);
   const __m512i abs_s = _mm512_andnot_si512(sign_bits, s_bits);
   const __mmask8 s_zero = _mm512_cmpeq_epi64_mask(abs_s, _mm512_setzero_si512());
-  const __mmask8 s_back_normal = (is_normal(abs_s) & is_normal(_mm512_sub_epi64(abs_s, shift))) | s_zero;
+  const __m512i second_normal_binade = _mm512_set1_epi64(std::int64_t(layout::second_normal_binade));
+  const __m512i span_above_least_binade =
+      _mm512_set1_epi64(std::int64_t((layout::exponent_field << layout::significand_bits) - layout::second_normal_binade));
+  const __mmask8 above_least_binade =  // layout::is_normal_above_least_binade, per lane
+      _mm512_cmplt_epu64_mask(_mm512_sub_epi64(abs_s, second_normal_binade), span_above_least_binade);
+  const __mmask8 s_back_normal = (above_least_binade & is_normal(_mm512_sub_epi64(abs_s, shift))) | s_zero;
   const __m512d s_back = _mm512_castsi512_pd(_mm512_mask_sub_epi64(s_bits, __mmask8(~s_zero), s_bits, shift));
 
   return {s_back, answers.which, __mmask8(fits & s_back_normal)};

@@ -59,25 +59,6 @@ namespace detail {
 
 // ---- the exact decision ------------------------------------------------------
 
-// TwoSum of two scaled numbers as IEEE arithmetic with an unbounded exponent
-// would compute it: when the smaller lies more than p + 1 binades below the
-// larger it is below half an ulp of it, so the rounded sum is the larger and
-// the error the smaller; otherwise the smaller's significand shifts into the
-// larger's frame without loss (its lowest bit stays above 2^(-2p-2)). A zero
-// term gives the other one, exactly (sign_of_exact_sum keeps the zeros of its
-// expansion; one test, as `|`, for either).
-template <class T>
-exact_pair<scaled<T>> two_sum(const scaled<T>& a, const scaled<T>& b) {
-  if ((a.significand == 0) | (b.significand == 0)) return {a + b, scaled<T>()};
-  const bool a_larger = a.exponent >= b.exponent;
-  const scaled<T>& large = a_larger ? a : b;
-  const scaled<T>& small = a_larger ? b : a;
-  const long gap = large.exponent - small.exponent;
-  if (gap > long(precision_of<T>()) + 1) return {large, small};
-  const auto [sum, error] = two_sum(large.significand, scaled<T>::shifted(small.significand, -gap));
-  return {scaled<T>::normalized(sum, large.exponent), scaled<T>::normalized(error, large.exponent)};
-}
-
 // Exact sums of products of T values, as scaled terms: each product of k
 // factors is the exact expansion of 2^(k-1) terms (TwoProd on the
 // significands, which lie in [0.5, 1) and so never underflow).
@@ -426,7 +407,7 @@ struct approximation {
 // One Newton step s0 + delta, delta = -Q(s0) / Q'(s0), on the case's polynomial Q
 // of leading coefficient a (the curvature bound). The bound is computed
 // alongside delta, not from it: it uses a cap on |delta| of 2^(5-p) |s0| (16 ulps;
-// the stable path is within 6.51), and a step beyond the cap is refused. With
+// the stable path is within 4.78), and a step beyond the cap is refused. With
 // rho = slope_error / |slope|:
 // - delta rounded: |delta~ - delta| (1 - rho) <= 2 eps |delta~| + eta + error / |slope| + rho |delta~|
 //   (1 / |slope| and the product each round once).
@@ -508,10 +489,8 @@ inline fixed_step contact_step(double u, double dy, double phi) {
 // (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc).
 inline fixed_step impact_step(double u, double dy, double phi) {
   using std::fabs;
-  const double gap = -dy, push = phi * gap;  // stable_form::impact, sharing its square root
-  const double root = std::sqrt(std::fma(u, u, 4 * (push * (u - gap))));
+  const auto [s0, root] = stable_form::impact_with_square_root(u, -dy, phi);
   const double denominator = 1 + phi;
-  const double s0 = -((u + 2 * push) + root) / (2 * denominator);
   const double inverse = 1 / root;
   const auto a = times_own_sum(s0, u).product;
   const auto g = detail::two_sum(dy, -s0);
@@ -548,7 +527,7 @@ inline bool rounds_alike(double s0, double delta, double factor, double& rounded
 }
 
 // float: the stable path's formulas run in double. Their proven bounds
-// (proofs/claimed_bounds.txt: at most 6.51 ulps of double at the root, every
+// (proofs/claimed_bounds.txt: at most 4.78 ulps of double at the root, every
 // branch, before the clamps) put the root within 2^-49 |s| of the double result:
 // float inputs lie deep inside double's plain window, so every intermediate and
 // the root are normal doubles. The float midpoints are exact doubles.

@@ -34,13 +34,48 @@ namespace stable_form {
 // u > 0 both summands of the numerator are negative, so the textbook root has no
 // cancellation. The discriminant u^2 - 4 phi dy (u + dy) is a sum of
 // non-negative terms; u - gap is exact when they are close (Sterbenz).
+//
+// Compensated: s = -N / D with N = u + 2 phi gap + root and D = 2 (1 + phi).
+// Rounded as written, N's three roundings and D's one would each cost up to an
+// ulp of s (4.49 ulps found, proofs/witnesses.txt); here N and D are carried
+// as exact pairs (two_sum, and the fma that gives phi gap's rounding error),
+// and the quotient by D's high part is corrected by its residual. What is
+// left is the root's error, at most half of N, and the last rounding: 2.5 ulps
+// proven (proofs/gappa/stable_impact.g; 1.15 found). The reciprocal of D
+// depends on phi alone, so the only division runs beside the square root.
 template <class Num>
-Num impact(const Num& u, const Num& gap, const Num& phi) {
+struct impact_root {
+  Num s, square_root;  // (A.30)'s root, and the square root of its discriminant
+};
+
+template <class Num>
+impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num& phi) {
   using detail::fused_multiply_add;
   using detail::square_root;
-  const Num push = phi * gap;  // phi |dy|
+  using detail::two_sum;
+  // the products with phi, formed from normal factors (a subnormal phi is then
+  // phi + 1's low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64))
+  const auto factors = detail::normal_factors_of(phi, gap);
+  const Num push = factors.phi * factors.x;  // phi |dy|
+  const Num push_error = fused_multiply_add(factors.phi, factors.x, -push);
   const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
-  return -((u + Num(2) * push) + square_root(discriminant)) / (Num(2) * (Num(1) + phi));
+  const Num root = square_root(discriminant);
+  const auto head = two_sum(u, Num(2) * push);
+  const auto numerator = two_sum(head.high, root);
+  const Num numerator_low = numerator.low + (head.low + Num(2) * push_error);
+  const auto one_plus_phi = two_sum(Num(1), phi);
+  const Num denominator = Num(2) * one_plus_phi.high;
+  const Num inverse = Num(1) / denominator;
+  const Num quotient = numerator.high * inverse;
+  const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
+  const Num twice_low = detail::select(factors.moved, Num(Num(2) * factors.phi), Num(one_plus_phi.low + one_plus_phi.low));
+  const Num correction = fused_multiply_add(-(quotient * factors.down), twice_low, Num(residual + numerator_low));
+  return {-fused_multiply_add(correction, inverse, quotient), root};
+}
+
+template <class Num>
+Num impact(const Num& u, const Num& gap, const Num& phi) {
+  return impact_with_square_root(u, gap, phi).s;
 }
 
 // (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
@@ -337,9 +372,10 @@ template <class T>
   // s normal both before and after the move: the exponent field moves, exactly
   // (a move beyond either end wraps or reaches the sign bit, which is_normal
   // refuses). The bands bound the intermediates, not the final division, so s
-  // itself is checked too; no test input has made it subnormal, hence one
-  // branch for both tests.
-  const bool inside_normal = layout::is_normal(s_magnitude);
+  // itself is checked too, and before the move from above the least normal
+  // binade (impact's quotient, just below s, must be normal); no test input has
+  // made it fail, hence one branch for both tests.
+  const bool inside_normal = layout::is_normal_above_least_binade(s_magnitude);
   if (inside_normal & layout::is_normal(bits(s_magnitude - offset))) [[likely]]
     return {std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), inside.which};
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).

@@ -239,6 +239,15 @@ struct binary_layout {
     constexpr bits normal_span = bits((exponent_field << significand_bits) - least_normal);
     return bits(magnitude - least_normal) < normal_span;
   }
+  // Whether it is normal and above the least normal binade, likewise. The band
+  // route keeps a moved s only from there up: impact's quotient, which the
+  // compensation corrects by less than 2^-50 of it, is then normal too
+  // (proofs/gappa/window/impact_push_zero.g.in).
+  static constexpr bits second_normal_binade = 2 * least_normal;
+  static bool is_normal_above_least_binade(bits magnitude) {
+    constexpr bits span = bits((exponent_field << significand_bits) - second_normal_binade);
+    return bits(magnitude - second_normal_binade) < span;
+  }
 };
 
 // condition ? if_true : if_false without a branch, for conditions that are a
@@ -253,6 +262,34 @@ T select(bool condition, const T& if_true, const T& if_false) {
     return std::bit_cast<T>(bits((std::bit_cast<bits>(if_true) & chosen) | (std::bit_cast<bits>(if_false) & ~chosen)));
   } else {
     return condition ? if_true : if_false;
+  }
+}
+
+// phi and a factor x of a product phi x, as factors of the same exact product
+// that are normal where phi is a subnormal binary32 or binary64: (phi 2^64,
+// x 2^-64), as a subnormal operand of a product or an fma costs a microcode
+// assist on many cores. phi 2^64 is formed from phi's bits, an integer that
+// converts exactly; x 2^-64 must be exact, which the one caller with a
+// subnormal phi, the band route's first band, ensures (|x| >= 2^104 there).
+// `down` is 2^-64 where moved, else 1, and scales another factor the same way.
+template <class T>
+struct normal_factors {
+  T phi, x, down;
+  bool moved;
+};
+
+template <class T>
+normal_factors<T> normal_factors_of(const T& phi, const T& x) {
+  if constexpr (hardware_binary<T>) {
+    using bits = typename binary_layout<T>::bits;
+    constexpr T up = T(0x1p64), down = T(0x1p-64);
+    constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * up;
+    const bits phi_bits = std::bit_cast<bits>(phi);
+    const bool subnormal = bits(phi_bits - 1) < bits(binary_layout<T>::least_normal - 1);  // phi > 0
+    const T phi_up = T(std::make_signed_t<bits>(phi_bits)) * least_subnormal_up;
+    return {select(subnormal, phi_up, phi), select(subnormal, T(x * down), x), select(subnormal, down, T(1)), subnormal};
+  } else {
+    return {phi, x, T(1), false};
   }
 }
 

@@ -139,6 +139,28 @@ struct scaled {
   scaled(const T& m, long e, int) : significand(m), exponent(e) {}
 };
 
+// TwoSum of two scaled numbers as IEEE arithmetic with an unbounded exponent
+// would compute it, and as detail::two_sum's six sums on scaled<T> do (the
+// rounded sum and its error are unique), with one alignment instead of six:
+// when the smaller lies more than p + 1 binades below the larger it is below
+// half an ulp of it, so the rounded sum is the larger and the error the
+// smaller; otherwise the smaller's significand shifts into the larger's frame
+// without loss (its lowest bit stays above 2^(-2p-2)). A zero term gives the
+// other one, exactly (sign_of_exact_sum keeps the zeros of its expansion; one
+// test, as `|`, for either). The exact decisions and the compensated impact
+// form run it.
+template <class T>
+exact_pair<scaled<T>> two_sum(const scaled<T>& a, const scaled<T>& b) {
+  if ((a.significand == 0) | (b.significand == 0)) return {a + b, scaled<T>()};
+  const bool a_larger = a.exponent >= b.exponent;
+  const scaled<T>& large = a_larger ? a : b;
+  const scaled<T>& small = a_larger ? b : a;
+  const long gap = large.exponent - small.exponent;
+  if (gap > long(precision_of<T>()) + 1) return {large, small};
+  const auto [sum, error] = two_sum(large.significand, scaled<T>::shifted(small.significand, -gap));
+  return {scaled<T>::normalized(sum, large.exponent), scaled<T>::normalized(error, large.exponent)};
+}
+
 // a * b as an exact pair high + low, by two_prod of the significands: their
 // product lies in [0.25, 1) and its low part is a multiple of 2^-2 digits,
 // which T holds unless its least normal value lies fewer than 2 digits
