@@ -301,7 +301,7 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T residual = std::fma(-quotient, impact_denominator, impact_numerator.high);
   // stable_form::impact's products with a subnormal phi from normal factors:
   // 2 phi q as (2 phi 2^64) (q 2^-64), phi 2^64 being phi_factor
-  const U phi_moved = mask<T>(phi_factor != phi);
+  const U phi_moved = rescaled ? mask<T>(phi_factor != phi) : U(0);
   const T twice_low = pick(phi_moved, T(T(2) * phi_factor), T(one_plus_phi.low + one_plus_phi.low));
   const T quotient_factor = pick(phi_moved, T(quotient * T(0x1p-64)), quotient);
   const T correction = std::fma(-quotient_factor, twice_low, T(residual + numerator_low));

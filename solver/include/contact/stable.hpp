@@ -48,14 +48,17 @@ struct impact_root {
   Num s, square_root;  // (A.30)'s root, and the square root of its discriminant
 };
 
-template <class Num>
+template <bool phi_may_be_subnormal = false, class Num>
 impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num& phi) {
   using detail::fused_multiply_add;
   using detail::square_root;
   using detail::two_sum;
-  // the products with phi, formed from normal factors (a subnormal phi is then
-  // phi + 1's low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64))
-  const auto factors = detail::normal_factors_of(phi, gap);
+  // The products with phi, formed from normal factors where phi may be
+  // subnormal (the band route's first band; a subnormal phi is then 1 + phi's
+  // low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64)). Elsewhere the
+  // selects would cost more than the rest of the compensation.
+  const auto factors = phi_may_be_subnormal ? detail::normal_factors_of(phi, gap)
+                                            : detail::normal_factors<Num>{phi, gap, Num(1), false};
   const Num push = factors.phi * factors.x;  // phi |dy|
   const Num push_error = fused_multiply_add(factors.phi, factors.x, -push);
   const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
@@ -68,14 +71,17 @@ impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num
   const Num inverse = Num(1) / denominator;
   const Num quotient = numerator.high * inverse;
   const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
-  const Num twice_low = detail::select(factors.moved, Num(Num(2) * factors.phi), Num(one_plus_phi.low + one_plus_phi.low));
-  const Num correction = fused_multiply_add(-(quotient * factors.down), twice_low, Num(residual + numerator_low));
+  const Num twice_low = phi_may_be_subnormal
+                            ? detail::select(factors.moved, Num(Num(2) * factors.phi), Num(one_plus_phi.low + one_plus_phi.low))
+                            : Num(one_plus_phi.low + one_plus_phi.low);
+  const Num low_quotient = phi_may_be_subnormal ? Num(quotient * factors.down) : quotient;
+  const Num correction = fused_multiply_add(-low_quotient, twice_low, Num(residual + numerator_low));
   return {-fused_multiply_add(correction, inverse, quotient), root};
 }
 
-template <class Num>
+template <bool phi_may_be_subnormal = false, class Num>
 Num impact(const Num& u, const Num& gap, const Num& phi) {
-  return impact_with_square_root(u, gap, phi).s;
+  return impact_with_square_root<phi_may_be_subnormal>(u, gap, phi).s;
 }
 
 // (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
@@ -273,7 +279,7 @@ inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& u
   if (unmoved_dy <= 0) {
     if constexpr (!band_route)  // the band route answers free flight before it moves u and dy
       if (unmoved_u <= -unmoved_dy) return free_flight(u);
-    T s = evaluate<plain>([](const auto&... x) { return stable_form::impact(x...); }, u, T(-dy), phi);
+    T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<band_route>(x...); }, u, T(-dy), phi);
     // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
     // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
     s = select(s < -u, T(-u), s);
