@@ -195,23 +195,17 @@ CONTACT_BATCH_INLINE T scaled_back(T s, bits_t<T> shift, bits_t<T>& normal) {
 
 // A subnormal phi (double only: float's subnormal phi stays on the scalar
 // path) as an operand of a product costs a microcode assist on many cores,
-// about as much as the rest of the rescaled pass. Its products with dy are
-// formed as (phi 2^64) (dy 2^-64) instead: phi 2^64 is normal and exact (its
-// bits, an integer below 2^52, convert exactly), and dy 2^-64 too, as phi's
-// band (the first) has |dy| >= 2^lowest = 2^104 there.
+// about as much as the rest of the rescaled pass. Its products are formed from
+// detail::normal_factors_of's (phi 2^64) (dy 2^-64) instead, as the band route
+// of solve_stable forms them; dy 2^-64 is exact, as phi's band (the first) has
+// |dy| >= 2^lowest = 2^104 there.
 template <class T>
-CONTACT_BATCH_INLINE std::array<T, 2> product_factors(T phi, T dy) {
+CONTACT_BATCH_INLINE detail::normal_factors<T> product_factors(T phi, T dy) {
   if constexpr (band_moves<T>::subnormal_phi_in_one_band) {
-    using U = bits_t<T>;
-    constexpr T two_to_k = T(0x1p64);
     static_assert(detail::phi_bands<T>::table[0].lowest - 64 >= std::numeric_limits<T>::min_exponent);
-    constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * two_to_k;  // a phi bit, times 2^64
-    const U phi_bits = std::bit_cast<U>(phi);
-    const U subnormal = mask<T>(U(phi_bits - 1) < U(detail::binary_layout<T>::least_normal - 1));
-    const T phi_up = T(std::make_signed_t<U>(phi_bits)) * least_subnormal_up;
-    return {pick(subnormal, phi_up, phi), pick(subnormal, T(dy / two_to_k), dy)};
+    return detail::normal_factors_of(phi, dy);
   } else {
-    return {phi, dy};
+    return {phi, dy, T(1), false};
   }
 }
 
@@ -234,7 +228,8 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const U no_contact_before = mask<T>(dy <= 0);
   // phi's two products with dy, phi |dy| and phi (2 dy), as phi_factor times
   // dy_factor: the same exact products, so the same roundings.
-  const auto [phi_factor, dy_factor] = rescaled ? product_factors(phi, dy) : std::array<T, 2>{phi, dy};
+  const auto factors = rescaled ? product_factors(phi, dy) : detail::normal_factors<T>{phi, dy, T(1), false};
+  const T phi_factor = factors.phi, dy_factor = factors.x;
 
   // Both square roots in one: (A.30) impact has stable_form::impact's
   // discriminant u^2 + 4 (phi gap) (u - gap), (A.32) release has
@@ -301,10 +296,8 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T residual = std::fma(-quotient, impact_denominator, impact_numerator.high);
   // stable_form::impact's products with a subnormal phi from normal factors:
   // 2 phi q as (2 phi 2^64) (q 2^-64), phi 2^64 being phi_factor
-  const U phi_moved = rescaled ? mask<T>(phi_factor != phi) : U(0);
-  const T twice_low = pick(phi_moved, T(T(2) * phi_factor), T(one_plus_phi.low + one_plus_phi.low));
-  const T quotient_factor = pick(phi_moved, T(quotient * T(0x1p-64)), quotient);
-  const T correction = std::fma(-quotient_factor, twice_low, T(residual + numerator_low));
+  const T twice_low = pick(mask<T>(factors.moved), T(T(2) * phi_factor), T(one_plus_phi.low + one_plus_phi.low));
+  const T correction = std::fma(-T(quotient * factors.down), twice_low, T(residual + numerator_low));
   T s = pick(is_impact, T(-std::fma(correction, inverse, quotient)), quotient_or_inverse);
 
   // The clamps of solve_stable, as one interval per case: [-u, next_down(dy)]

@@ -269,8 +269,9 @@ T select(bool condition, const T& if_true, const T& if_false) {
 // that are normal where phi is a subnormal binary32 or binary64: (phi 2^64,
 // x 2^-64), as a subnormal operand of a product or an fma costs a microcode
 // assist on many cores. phi 2^64 is formed from phi's bits, an integer that
-// converts exactly; x 2^-64 must be exact, which the one caller with a
-// subnormal phi, the band route's first band, ensures (|x| >= 2^104 there).
+// converts exactly; x 2^-64 must be exact, which the callers with a subnormal
+// phi, the band route's first band and the batch's rescaled pass over it,
+// ensure (|x| >= 2^104 there).
 // `down` is 2^-64 where moved, else 1, and scales another factor the same way.
 template <class T>
 struct normal_factors {
