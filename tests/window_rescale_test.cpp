@@ -76,7 +76,7 @@ void check_out_of_window(std::uint64_t seed, long count) {
   long failures = 0;
   for (long i = 0; i < count && failures < 10; ++i) {
     harness::input<T> x;
-    switch (source.integer(0, 5)) {
+    switch (source.integer(0, 6)) {
       case 0: x = harness::any_input<T>(source); break;
       case 1: {  // u and dy within a band's room of each other, anywhere in T's range
         const long top = source.integer(lowest, highest);
@@ -100,6 +100,12 @@ void check_out_of_window(std::uint64_t seed, long count) {
       case 4: {  // near overflow: results beyond the largest finite T
         x = {with_binade<T>(source, highest - 2 * half, highest), with_binade<T>(source, highest - 8, highest),
              any_phi<T>(source)};
+        break;
+      }
+      case 5: {  // impacts, u the larger and gap = -dy any number of binades below: the impact room
+        const long top = source.integer(lowest, highest);
+        const T larger = std::fabs(with_binade<T>(source, top, top));
+        x = {larger, -std::fabs(with_binade<T>(source, lowest, top)), any_phi<T>(source)};
         break;
       }
       default: {  // zeros with anything
@@ -136,6 +142,8 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
       {0x1p-3, -0x1p-2, 0x1.8p1020}, // impact with 2 (1 + phi) near 2^1023
       {1e-5, 1e-5, 0x1p974},         // phi at the foot of the last band
       {0x1p-1074, 0x1p1023, 0x1p-1074},  // u and dy too far apart for phi's band
+      {1.0, -0x1p-1000, 1.0},        // impact: gap below the band's lowest, inside its impact room
+      {0x1p500, -0x1p-900, 1.0},     // impact: gap below the impact room too
       {1e-5, -1e-5, tiny},           // phi subnormal
       {1e300, 1e300, -0.0},          // phi = -0
       {0.0, 1e300, 0.0},             // phi = 0: s = -0 from the scaled path's fma
@@ -163,7 +171,10 @@ void expect_band_bounds_monotone() {
         const auto narrower = bands::of(low, high);
         EXPECT_GE(narrower.top, band.top) << "band " << j << " phi binades " << low << ".." << high;
         EXPECT_LE(narrower.lowest, band.lowest) << "band " << j << " phi binades " << low << ".." << high;
+        EXPECT_LE(narrower.impact_lowest, band.impact_lowest) << "band " << j << " phi binades " << low << ".." << high;
       }
+    // the impact room is the band's room or more: an impact the band holds takes it either way
+    EXPECT_LE(band.impact_lowest, band.lowest) << "band " << j;
   }
   // every band has room, the last one too: it ends where 2 (1 + phi) could overflow
   for (const auto& band : bands::table) EXPECT_LE(band.lowest, band.top - 1);

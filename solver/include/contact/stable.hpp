@@ -412,9 +412,13 @@ template <bool both_normal, class T>
   if ((dy <= 0) & (u <= -dy)) return free_flight(u);  // one branch: the sign of dy is a coin toss
   const auto band = phi_bands<T>::of_phi(phi);
   const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
-  // valid, and outside safe_window (a band holds all of it): the scaled path
+  // valid, and outside safe_window (a band holds all of it): the scaled path.
+  // An impact (dy <= 0 once free flight is answered) has a room of its own,
+  // as u is the larger: gap may lie far lower (a select: the case is a coin toss).
   static_assert(phi_bands<T>::holds_safe_window);
-  if (smaller + shift < band.lowest) return solve_scaled(u, dy, phi);
+  // (and where phi is subnormal, gap 2^-64 stays exact: detail::normal_factors_of)
+  static_assert(phi_bands<T>::table[0].impact_lowest - 64 >= std::numeric_limits<T>::min_exponent);
+  if (smaller + shift < select(dy <= 0, band.impact_lowest, band.lowest)) return solve_scaled(u, dy, phi);
   // the band puts both in its normal binades: for normal u and dy the move is exact on the exponent field
   const bits offset = bits(shift) << layout::significand_bits;
   const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);

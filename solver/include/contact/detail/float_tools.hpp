@@ -271,7 +271,7 @@ T select(bool condition, const T& if_true, const T& if_false) {
 // assist on many cores. phi 2^64 is formed from phi's bits, an integer that
 // converts exactly; x 2^-64 must be exact, which the callers with a subnormal
 // phi, the band route's first band and the batch's rescaled pass over it,
-// ensure (|x| >= 2^104 there).
+// ensure (|x| >= 2^52 there: the first band's impact room in double, 2^23 in float).
 // `down` is 2^-64 where moved, else 1, and scales another factor the same way.
 template <class T>
 struct normal_factors {

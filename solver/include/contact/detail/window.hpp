@@ -100,15 +100,19 @@ int binade_of(const T& x) {
 // intermediate of the stable formulas, of the fma pre-test and of two_prod
 // over- or underflows (docs/equations.md, section 6, lists each bound;
 // proofs/gappa/window/ proves them per band). A band leaves u and dy 406 to
-// 930 binades of spread in double, 16 to 105 in float (the plain window: 480
-// and 48 with phi inside it). The last band ends early, at `end`, 2^1021
-// (double) or 2^125 (float): from there up 2 (1 + phi) could overflow, and
-// phi is in no band.
+// 956 binades of spread in double, 16 to 116 in float (the plain window: 480
+// and 48 with phi inside it); an impact, 458 to 1428 and 39 to 166. The last
+// band ends early, at `end`, 2^1021 (double) or 2^125 (float): from there up
+// 2 (1 + phi) could overflow, and phi is in no band.
 template <class T>
   requires hardware_binary<T>
 struct phi_bands {
   struct band {
     int top, lowest;
+    // the least binade of gap = -dy when u, the larger, lies at top - 1: the
+    // impact formula's own room (impact's u > gap puts u at top - 1 on the band
+    // route), far below `lowest` where phi is small
+    int impact_lowest;
   };
   static constexpr int digits = std::numeric_limits<T>::digits;
   static constexpr int least_normal_binade = std::numeric_limits<T>::min_exponent - 1;  // -1022
@@ -138,12 +142,16 @@ struct phi_bands {
     const int top = (overflow_binade - 1 - std::max(Q + 3, 0)) / 2;
     // a non-zero phi is a multiple of 2^(Pe - p + 1), a non-zero u or dy of 2^(b - p + 1)
     const int Pe = std::max(P, emin);
-    const int lowest = std::max({ceil_half(emin - P + p - 1),  // push (u - gap) >= 2^(P + 2b - p + 1)
-                                 emin - Pe + 2 * p - 2,        // two_prod's low part, the fmas' exact values
-                                 ceil_half(emin),              // u^2, the discriminants
-                                 emin - P,                     // phi dy
-                                 emin + p - 1});               // u - gap, u + dy, the margin
-    return {top, lowest};
+    const int lowest = std::max({ceil_half(emin - P),    // phi dy^2
+                                 emin - Pe + 2 * p - 2,  // two_prod's low part, the fmas' exact values
+                                 ceil_half(emin),        // u^2, the discriminants
+                                 emin - P,               // phi dy
+                                 emin + p - 1});         // u + dy, the margin
+    // with u in [2^(top-1), 2^top): push = phi gap and, where gap is near u,
+    // push (u - gap) >= 2^(P + 2 (top - 2) - p + 1); push's error a multiple of
+    // the least subnormal; gap normal, so that it moves on its bits
+    const int impact_lowest = std::max({emin - P, emin - Pe + p - 1, emin});
+    return {top, lowest, impact_lowest};
   }
   static constexpr std::array<band, count> table = [] {
     std::array<band, count> bands{};
