@@ -159,13 +159,40 @@ TEST(Scaled, ShiftsBeyondIntSaturateToInfinityOrZero) {
   EXPECT_EQ(scaled<double>::shifted(-0.5, std::numeric_limits<long>::max()), -inf);
   EXPECT_EQ(scaled<double>::shifted(0.5, std::numeric_limits<long>::min()), 0.0);
   EXPECT_EQ(scaled<double>::shifted(0.5, 3), 4.0);
-  // a subnormal x takes ldexp, with the shift clamped to an int first
+  // a subnormal x moves as the integer of its bits, with the shift clamped first
   const double least = std::numeric_limits<double>::denorm_min();
   EXPECT_EQ(scaled<double>::shifted(least, std::numeric_limits<long>::max()), inf);
   EXPECT_EQ(scaled<double>::shifted(-least, std::numeric_limits<long>::min()), -0.0);
   EXPECT_TRUE(std::signbit(scaled<double>::shifted(-least, std::numeric_limits<long>::min())));
   EXPECT_EQ(scaled<double>::shifted(least, 1074), 1.0);
 }
+
+// A subnormal moves as the integer of its bits times 2^-1074 (2^-149 in
+// float), not through frexp and ldexp, which are slow there: the same values.
+template <class T>
+void expect_subnormals_move_as_ldexp_does() {
+  const T least = std::numeric_limits<T>::denorm_min(), least_normal = std::numeric_limits<T>::min();
+  const int digits = std::numeric_limits<T>::digits;
+  long checked = 0;
+  for (T x = least; x < least_normal; x = x * 2 + least * T(checked % 5)) {  // every subnormal binade, varied bits
+    for (const T signed_x : {x, -x}) {
+      for (long shift = -digits - 3; shift <= 2 * std::numeric_limits<T>::max_exponent + 3; shift += 7) {
+        const T expected = std::ldexp(signed_x, int(shift)), got = contact::detail::scaled<T>::shifted(signed_x, shift);
+        EXPECT_EQ(got, expected) << std::hexfloat << signed_x << " shifted by " << shift;
+        EXPECT_EQ(std::signbit(got), std::signbit(expected));
+        ++checked;
+      }
+      const scaled<T> held(signed_x);
+      EXPECT_GE(std::fabs(held.significand), T(0.5));
+      EXPECT_LT(std::fabs(held.significand), T(1));
+      EXPECT_EQ(held.value(), signed_x);
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(Scaled, SubnormalsMoveAsLdexpDoesInDouble) { expect_subnormals_move_as_ldexp_does<double>(); }
+TEST(Scaled, SubnormalsMoveAsLdexpDoesInFloat) { expect_subnormals_move_as_ldexp_does<float>(); }
 
 // A cluster of the exact sign that T cannot hold: in a 6-bit format whose
 // least normal value is 2^-12, u + dy - phi dy for u = -0.4296875,

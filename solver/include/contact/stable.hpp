@@ -258,6 +258,20 @@ T clamped_above_positive(const T& s, const T& dy) {  // dy > 0: s > dy, else nex
   }
 }
 
+// Each case's clamps onto its side of dy (solve_cases).
+template <class T>
+T impact_clamped(T s, const T& u, const T& dy) {
+  // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
+  // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
+  s = select(s < -u, T(-u), s);
+  return clamped_below_nonpositive(s, dy);
+}
+
+template <class T>
+T contact_clamped(const T& s, const T& dy) {
+  return select(s > dy, dy, s);
+}
+
 // (A.29), where dy <= 0 and u <= -dy: s = -u, exact for any finite u.
 template <class T>
 solution<T> free_flight(const T& u) {
@@ -279,15 +293,12 @@ inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& u
   if (unmoved_dy <= 0) {
     if constexpr (!band_route)  // the band route answers free flight before it moves u and dy
       if (unmoved_u <= -unmoved_dy) return free_flight(u);
-    T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<band_route>(x...); }, u, T(-dy), phi);
-    // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
-    // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
-    s = select(s < -u, T(-u), s);
-    return {clamped_below_nonpositive(s, dy), contact_case::impact};
+    const T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<band_route>(x...); }, u, T(-dy), phi);
+    return {impact_clamped(s, u, dy), contact_case::impact};
   }
   auto contact_answer = [&] {
-    T s = evaluate<plain>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi);
-    return solution<T>{select(s > dy, dy, s), contact_case::contact};
+    const T s = evaluate<plain>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi);
+    return solution<T>{contact_clamped(s, dy), contact_case::contact};
   };
   if constexpr (plain) {
     auto release_answer = [&] {
@@ -367,6 +378,21 @@ template <class T>
   return solve_anywhere(u, dy, phi);
 }
 
+// A moved s, normal, whose move back underflows: the scaled path's s, which
+// rounds the same significand once into T's subnormals (scaled<T>::value()),
+// and then clamps it onto its case's side of dy. The clamps in the moved frame
+// change nothing here: each moves s toward a bound that moves with it, and
+// rounding keeps the order of s and that bound.
+template <class T>
+[[gnu::noinline]] solution<T> moved_back_below_normal(solution<T> inside, T u, T dy, int shift) {
+  const T s = scaled<T>::shifted(inside.s, -shift);
+  switch (inside.which) {
+    case contact_case::impact: return {impact_clamped(s, u, dy), inside.which};
+    case contact_case::contact: return {contact_clamped(s, dy), inside.which};
+    default: return {clamped_above_positive(s, dy), inside.which};  // release (free flight is answered unmoved)
+  }
+}
+
 // The band route's last step: `inside`, the answer for u and dy moved by 2^shift, moved back.
 template <class T>
 [[gnu::always_inline]] inline solution<T> moved_back(const solution<T>& inside, T u, T dy, T phi, int shift) {
@@ -383,15 +409,22 @@ template <class T>
   // made it fail, hence one branch for both tests.
   const bool inside_normal = layout::is_normal_above_least_binade(s_magnitude);
   const bool moved_normal = layout::is_normal(bits(s_magnitude - offset));
+  const int moved_binade = int(s_magnitude >> layout::significand_bits) - layout::bias - shift;
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
   // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its
   // root, a few ulps from s, lies beyond the largest T: it keeps the infinity.
   // A select, not a branch: in the extreme scene a quarter of the band route's
   // release roots overflow, and the test waits for the root.
-  const bool overflows = int(s_magnitude >> layout::significand_bits) - layout::bias - shift > std::numeric_limits<T>::max_exponent;
+  const bool overflows = moved_binade > std::numeric_limits<T>::max_exponent;
   if (inside_normal & (moved_normal | overflows)) [[likely]]
     return {select(moved_normal, std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), std::numeric_limits<T>::infinity()),
             inside.which};
+  // s subnormal or zero once moved back (in the extreme scene, 3% of all
+  // inputs: u or dy subnormal): one rounding of the moved s, as the scaled path
+  // makes; in the binade just beyond the largest T, or where the moved s is
+  // not normal, the scaled path decides
+  if (inside_normal & (moved_binade < std::numeric_limits<T>::min_exponent - 1))
+    return moved_back_below_normal(inside, u, dy, shift);
   return solve_scaled(u, dy, phi);
 }
 
@@ -423,7 +456,10 @@ template <bool both_normal, class T>
   const bits offset = bits(shift) << layout::significand_bits;
   const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
   const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
-  const solution<T> inside = solve_cases<true, true>(moved_u, moved_dy, phi, u, dy);
+  // the unmoved signs decide sooner; a subnormal u or dy, though, would cost
+  // the early estimate a microcode assist, and the moved ones are normal
+  const solution<T> inside = both_normal ? solve_cases<true, true>(moved_u, moved_dy, phi, u, dy)
+                                         : solve_cases<true, true>(moved_u, moved_dy, phi, moved_u, moved_dy);
   if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
   return moved_back(inside, u, dy, phi, shift);
 }
