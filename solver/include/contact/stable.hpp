@@ -48,17 +48,17 @@ struct impact_root {
   Num s, square_root;  // (A.30)'s root, and the square root of its discriminant
 };
 
-template <bool phi_may_be_subnormal = false, class Num>
+// `phi_is_subnormal` (the band route's subnormal-phi path, for binary32 and
+// binary64): each product with phi is formed from normal factors of the same
+// exact product, (phi 2^64) (x 2^-64) (detail::subnormal_phi_factors), as a
+// subnormal operand costs a microcode assist. The values are the same.
+template <bool phi_is_subnormal = false, class Num>
 impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num& phi) {
   using detail::fused_multiply_add;
   using detail::square_root;
   using detail::two_sum;
-  // The products with phi, formed from normal factors where phi may be
-  // subnormal (the band route's first band; a subnormal phi is then 1 + phi's
-  // low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64)). Elsewhere the
-  // selects would cost more than the rest of the compensation.
-  const auto factors = phi_may_be_subnormal ? detail::normal_factors_of(phi, gap)
-                                            : detail::normal_factors<Num>{phi, gap, Num(1), false};
+  // (a subnormal phi is 1 + phi's low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64))
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
   const Num push = factors.phi * factors.x;  // phi |dy|
   const Num push_error = fused_multiply_add(factors.phi, factors.x, -push);
   const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
@@ -71,36 +71,36 @@ impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num
   const Num inverse = Num(1) / denominator;
   const Num quotient = numerator.high * inverse;
   const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
-  const Num twice_low = phi_may_be_subnormal
-                            ? detail::select(factors.moved, Num(Num(2) * factors.phi), Num(one_plus_phi.low + one_plus_phi.low))
-                            : Num(one_plus_phi.low + one_plus_phi.low);
-  const Num low_quotient = phi_may_be_subnormal ? Num(quotient * factors.down) : quotient;
+  const Num twice_low = phi_is_subnormal ? Num(Num(2) * factors.phi) : Num(one_plus_phi.low + one_plus_phi.low);
+  const Num low_quotient = phi_is_subnormal ? Num(quotient * factors.down) : quotient;
   const Num correction = fused_multiply_add(-low_quotient, twice_low, Num(residual + numerator_low));
   return {-fused_multiply_add(correction, inverse, quotient), root};
 }
 
-template <bool phi_may_be_subnormal = false, class Num>
+template <bool phi_is_subnormal = false, class Num>
 Num impact(const Num& u, const Num& gap, const Num& phi) {
-  return impact_with_square_root<phi_may_be_subnormal>(u, gap, phi).s;
+  return impact_with_square_root<phi_is_subnormal>(u, gap, phi).s;
 }
 
 // (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
 // s = (2 phi dy - u) / (1 + phi). The numerator cancels as s -> 0; the fma
 // leaves it a single rounding. 2 dy, not 2 phi, so that nothing overflows.
-template <class Num>
+template <bool phi_is_subnormal = false, class Num>
 Num contact(const Num& u, const Num& dy, const Num& phi) {
   using detail::fused_multiply_add;
-  return fused_multiply_add(phi, Num(2) * dy, -u) / (Num(1) + phi);
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
+  return fused_multiply_add(factors.phi, Num(2) * factors.x, -u) / (Num(1) + phi);
 }
 
 // (A.32), from (A.23) corrected: s^2 + u s - phi dy^2 = 0, positive root
 // s = (-u + sqrt(u^2 + 4 phi dy^2)) / 2. For u > 0 the sum cancels, so the root
 // is rationalised: s = 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2)).
-template <class Num>
+template <bool phi_is_subnormal = false, class Num>
 Num release(const Num& u, const Num& dy, const Num& phi) {
   using detail::fused_multiply_add;
   using detail::square_root;
-  const Num stiffness_term = (phi * dy) * dy;  // phi dy^2
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
+  const Num stiffness_term = (factors.phi * factors.x) * dy;  // phi dy^2
   const Num root = square_root(fused_multiply_add(u, u, Num(4) * stiffness_term));
   if constexpr (std::is_floating_point_v<Num>) {
     // one division, its operands selected: the sign of u is a coin toss on
@@ -155,12 +155,13 @@ int sign_of_dominant_binade(const T& u, const T& dy, const T& phi) {
 // is within eps (|u + dy| + |e|) of the exact value, so outside the margin
 // 4 eps (|u| + |dy| + |phi dy|) its sign is the exact sign, and only inputs
 // within a few ulps of the boundary pay for the exact sum.
-template <class T>
+template <bool phi_is_subnormal = false, class T>
 int estimated_contact_sign(const T& u, const T& dy, const T& phi) {  // +1, -1, or 0: within the margin
   using std::fabs;
-  const T estimate = fused_multiply_add(-phi, dy, T(u + dy));
+  const auto factors = factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors (impact_with_square_root)
+  const T estimate = fused_multiply_add(-factors.phi, factors.x, T(u + dy));
   // dy >= 0 and phi >= 0 wherever it is asked: |dy| = dy and |phi dy| = phi dy, as values
-  const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + dy + phi * dy);
+  const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + dy + factors.phi * factors.x);
   if (fabs(estimate) > margin) return estimate > 0 ? 1 : -1;
   return 0;
 }
@@ -288,21 +289,22 @@ solution<T> free_flight(const T& u) {
 // about twice as much). Declared inline: GCC then inlines it into
 // solve_stable's common path whatever its other callers (measured: 50
 // instructions per physical input, against 64 with a call).
-template <bool plain, bool band_route = false, class T>
+template <bool plain, bool band_route = false, bool phi_is_subnormal = false, class T>
 inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& unmoved_u, const T& unmoved_dy) {
+  static_assert(plain || !phi_is_subnormal);
   if (unmoved_dy <= 0) {
     if constexpr (!band_route)  // the band route answers free flight before it moves u and dy
       if (unmoved_u <= -unmoved_dy) return free_flight(u);
-    const T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<band_route>(x...); }, u, T(-dy), phi);
+    const T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<phi_is_subnormal>(x...); }, u, T(-dy), phi);
     return {impact_clamped(s, u, dy), contact_case::impact};
   }
   auto contact_answer = [&] {
-    const T s = evaluate<plain>([](const auto&... x) { return stable_form::contact(x...); }, u, dy, phi);
+    const T s = evaluate<plain>([](const auto&... x) { return stable_form::contact<phi_is_subnormal>(x...); }, u, dy, phi);
     return solution<T>{contact_clamped(s, dy), contact_case::contact};
   };
   if constexpr (plain) {
     auto release_answer = [&] {
-      return solution<T>{clamped_above_positive(stable_form::release(u, dy, phi), dy), contact_case::release};
+      return solution<T>{clamped_above_positive(stable_form::release<phi_is_subnormal>(u, dy, phi), dy), contact_case::release};
     };
     if constexpr (band_route) {
       // Contact or release is a coin toss too. On the band route the
@@ -314,8 +316,9 @@ inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& u
       // An input the estimate leaves undecided comes back as `invalid` (no
       // valid input's answer): the caller takes the exact decision out of
       // line, so that this path makes no call that values must survive.
-      const bool likely_contact = fused_multiply_add(-phi, unmoved_dy, T(unmoved_u + unmoved_dy)) > 0;
-      const int sign = estimated_contact_sign(u, dy, phi);
+      const auto factors = factors_of<phi_is_subnormal>(phi, unmoved_dy);  // unmoved = moved where phi is subnormal
+      const bool likely_contact = fused_multiply_add(-factors.phi, factors.x, T(unmoved_u + unmoved_dy)) > 0;
+      const int sign = estimated_contact_sign<phi_is_subnormal>(u, dy, phi);
       if (likely_contact) {
         if (sign > 0) [[likely]] return contact_answer();
       } else {
@@ -434,6 +437,17 @@ template <class T>
   return moved_back(solve_cases<true>(moved_u, moved_dy, phi, u, dy), u, dy, phi, shift);
 }
 
+// The band route for a subnormal phi (the first band): the formulas form
+// their products with phi from normal factors (stable_form::impact_with_square_root),
+// out of line, as few inputs have one. Its moved u and dy, normal, stand for
+// the unmoved ones too.
+template <class T>
+[[gnu::noinline]] solution<T> solve_moved_subnormal_phi(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
+  const solution<T> inside = solve_cases<true, true, true>(moved_u, moved_dy, phi, moved_u, moved_dy);
+  if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
+  return moved_back(inside, u, dy, phi, shift);
+}
+
 // The band route from the binades of the larger and the smaller non-zero one
 // of |u| and |dy| on; both_normal: u and dy are normal, and move on their bits.
 template <bool both_normal, class T>
@@ -449,13 +463,14 @@ template <bool both_normal, class T>
   // An impact (dy <= 0 once free flight is answered) has a room of its own,
   // as u is the larger: gap may lie far lower (a select: the case is a coin toss).
   static_assert(phi_bands<T>::holds_safe_window);
-  // (and where phi is subnormal, gap 2^-64 stays exact: detail::normal_factors_of)
+  // (and where phi is subnormal, gap 2^-64 stays exact: detail::subnormal_phi_factors)
   static_assert(phi_bands<T>::table[0].impact_lowest - 64 >= std::numeric_limits<T>::min_exponent);
   if (smaller + shift < select(dy <= 0, band.impact_lowest, band.lowest)) return solve_scaled(u, dy, phi);
   // the band puts both in its normal binades: for normal u and dy the move is exact on the exponent field
   const bits offset = bits(shift) << layout::significand_bits;
   const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
   const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
+  if (is_subnormal_phi(phi)) [[unlikely]] return solve_moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
   // the unmoved signs decide sooner; a subnormal u or dy, though, would cost
   // the early estimate a microcode assist, and the moved ones are normal
   const solution<T> inside = both_normal ? solve_cases<true, true>(moved_u, moved_dy, phi, u, dy)

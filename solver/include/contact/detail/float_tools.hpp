@@ -279,16 +279,38 @@ struct normal_factors {
   bool moved;
 };
 
+// phi > 0 subnormal (binary32 or binary64)
+template <class T>
+  requires hardware_binary<T>
+bool is_subnormal_phi(const T& phi) {
+  using bits = typename binary_layout<T>::bits;
+  return bits(std::bit_cast<bits>(phi) - 1) < bits(binary_layout<T>::least_normal - 1);
+}
+
+// The factors where phi is known to be subnormal (the band route's subnormal-phi path).
+template <class T>
+  requires hardware_binary<T>
+normal_factors<T> subnormal_phi_factors(const T& phi, const T& x) {
+  using bits = typename binary_layout<T>::bits;
+  constexpr T up = T(0x1p64), down = T(0x1p-64);
+  constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * up;
+  return {T(std::make_signed_t<bits>(std::bit_cast<bits>(phi))) * least_subnormal_up, T(x * down), down, true};
+}
+
+// The factors of phi x: unmoved unless `phi_is_subnormal`, a compile-time fact.
+template <bool phi_is_subnormal, class T>
+normal_factors<T> factors_of(const T& phi, const T& x) {
+  if constexpr (phi_is_subnormal) return subnormal_phi_factors(phi, x);
+  else return {phi, x, T(1), false};
+}
+
+// The factors for any phi > 0, by selects (the batch's lanes).
 template <class T>
 normal_factors<T> normal_factors_of(const T& phi, const T& x) {
   if constexpr (hardware_binary<T>) {
-    using bits = typename binary_layout<T>::bits;
-    constexpr T up = T(0x1p64), down = T(0x1p-64);
-    constexpr T least_subnormal_up = std::numeric_limits<T>::denorm_min() * up;
-    const bits phi_bits = std::bit_cast<bits>(phi);
-    const bool subnormal = bits(phi_bits - 1) < bits(binary_layout<T>::least_normal - 1);  // phi > 0
-    const T phi_up = T(std::make_signed_t<bits>(phi_bits)) * least_subnormal_up;
-    return {select(subnormal, phi_up, phi), select(subnormal, T(x * down), x), select(subnormal, down, T(1)), subnormal};
+    const bool subnormal = is_subnormal_phi(phi);
+    const auto moved = subnormal_phi_factors(phi, x);
+    return {select(subnormal, moved.phi, phi), select(subnormal, moved.x, x), select(subnormal, moved.down, T(1)), subnormal};
   } else {
     return {phi, x, T(1), false};
   }
