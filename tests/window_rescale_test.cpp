@@ -76,7 +76,7 @@ void check_out_of_window(std::uint64_t seed, long count) {
   long failures = 0;
   for (long i = 0; i < count && failures < 10; ++i) {
     harness::input<T> x;
-    switch (source.integer(0, 6)) {
+    switch (source.integer(0, 7)) {
       case 0: x = harness::any_input<T>(source); break;
       case 1: {  // u and dy within a band's room of each other, anywhere in T's range
         const long top = source.integer(lowest, highest);
@@ -106,6 +106,13 @@ void check_out_of_window(std::uint64_t seed, long count) {
         const long top = source.integer(lowest, highest);
         const T larger = std::fabs(with_binade<T>(source, top, top));
         x = {larger, -std::fabs(with_binade<T>(source, lowest, top)), any_phi<T>(source)};
+        break;
+      }
+      case 6: {  // contact and release with u and dy any number of binades apart
+        const long top = source.integer(lowest, highest);
+        const T larger = with_binade<T>(source, top, top), smaller = with_binade<T>(source, lowest, top);
+        const bool u_larger = harness::coin(source);
+        x = {u_larger ? larger : smaller, std::fabs(u_larger ? smaller : larger), any_phi<T>(source)};
         break;
       }
       default: {  // zeros with anything
