@@ -157,6 +157,15 @@ TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
   }
 }
 
+// A batch whose lanes outside the window all lie in whole vectors (AVX-512:
+// the packed vectors alone are left for the end), after a vector inside.
+TEST(Batch, WholeVectorsOutsideTheWindowAtTheEndEqualScalarStable) {
+  lanes<double> in;
+  for (int k = 0; k < 8; ++k) in.add(1e-4 * (k + 1), -2e-4, 10.0);            // inside the window
+  for (int k = 0; k < 16; ++k) in.add(1e-300 * (k + 1), -2e-300, 0x1p-700);  // outside, in a band
+  expect_same_as_scalar(in);
+}
+
 // Lanes for the rescaled pass's phi bands (detail::phi_bands): phi at both
 // edges of every band and inside it, subnormal phi, phi in no band (from
 // phi_bands::end: 2^1021 in double, 2^125 in float), and u, dy whose binades lie around the band's

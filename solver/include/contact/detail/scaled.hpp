@@ -47,53 +47,58 @@ struct scaled {
         r.exponent = e + field - (bias - 1);
         return r;
       }
-      if (field == 0 && m != 0) return normalized(subnormal_as_integer(m), e - least_binade_of_bits);
-    }
-    if (m == 0 || !isfinite(m)) {
-      r.significand = m;
+      if (field == int(field_mask) || m == 0) {  // infinity, NaN and zero stay as they are
+        r.significand = m;
+        return r;
+      }
+      return normalized(subnormal_as_integer(m), e - least_binade_of_bits);
+    } else {
+      if (m == 0 || !isfinite(m)) {
+        r.significand = m;
+        return r;
+      }
+      int k = 0;
+      r.significand = frexp(m, &k);
+      r.exponent = e + k;
       return r;
     }
-    int k = 0;
-    r.significand = frexp(m, &k);
-    r.exponent = e + k;
-    return r;
   }
 
   // x * 2^shift, clamped so that huge shifts saturate to 0 or infinity.
   static T shifted(const T& x, long shift) {
     using std::ldexp;
     if constexpr (hardware_binary<T>) {  // frexp and ldexp's common case on the bits
-      // ldexp of a normal x, on its bits: a normal result by moving the exponent
-      // field, zero and infinity directly, a subnormal one by one multiplication
+      // ldexp on the bits: a normal result by moving the exponent field, zero
+      // and infinity directly, a subnormal one by one multiplication
       using layout = binary_layout<T>;
       using bits = typename layout::bits;
       constexpr int significand_bits = layout::significand_bits;
       constexpr bits field_mask = layout::exponent_field;
       const bits b = std::bit_cast<bits>(x);
       const long field = long((b >> significand_bits) & field_mask);
-      if (field == 0 && x != 0)  // (a shift from below -2^31 on gives zero all the same, and no overflow)
+      if (field == long(field_mask) || x == 0) return x;  // infinity, NaN and zero times 2^shift
+      if (field == 0)  // (a shift from below -2^31 on gives zero all the same, and no overflow)
         return shifted(subnormal_as_integer(x), std::max(shift, long(INT_MIN)) - least_binade_of_bits);
-      if (field != 0 && field != long(field_mask)) {
-        // beyond the whole exponent range either way; no sum below can overflow a long
-        if (shift <= -2 * long(field_mask)) return std::copysign(T(0), x);
-        if (shift >= 2 * long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
-        const long target = field + shift;  // the exponent field the result would have
-        if (target > 0 && target < long(field_mask)) return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
-        if (target >= long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
-        // below 2^(1 - bias - significand_bits) / 2 (ties to the even zero) it rounds to zero
-        if (target <= -significand_bits - 1) return std::copysign(T(0), x);
-        // a subnormal result: an exact move to a normal binade `margin` above it,
-        // then one multiplication by the normal 2^-margin, which rounds once, as ldexp
-        constexpr int margin = significand_bits + 2;
-        constexpr T down = std::bit_cast<T>(bits(bits(layout::bias - margin) << significand_bits));
-        const bits field_cleared = b & ~(field_mask << significand_bits);
-        return std::bit_cast<T>(bits(field_cleared | (bits(target + margin) << significand_bits))) * down;
-      }
+      // beyond the whole exponent range either way; no sum below can overflow a long
+      if (shift <= -2 * long(field_mask)) return std::copysign(T(0), x);
+      if (shift >= 2 * long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
+      const long target = field + shift;  // the exponent field the result would have
+      if (target > 0 && target < long(field_mask)) return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
+      if (target >= long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
+      // below 2^(1 - bias - significand_bits) / 2 (ties to the even zero) it rounds to zero
+      if (target <= -significand_bits - 1) return std::copysign(T(0), x);
+      // a subnormal result: an exact move to a normal binade `margin` above it,
+      // then one multiplication by the normal 2^-margin, which rounds once, as ldexp
+      constexpr int margin = significand_bits + 2;
+      constexpr T down = std::bit_cast<T>(bits(bits(layout::bias - margin) << significand_bits));
+      const bits field_cleared = b & ~(field_mask << significand_bits);
+      return std::bit_cast<T>(bits(field_cleared | (bits(target + margin) << significand_bits))) * down;
+    } else {
+      constexpr long limit = INT_MAX / 2;
+      if (shift > limit) shift = limit;
+      if (shift < -limit) shift = -limit;
+      return ldexp(x, static_cast<int>(shift));
     }
-    constexpr long limit = INT_MAX / 2;
-    if (shift > limit) shift = limit;
-    if (shift < -limit) shift = -limit;
-    return ldexp(x, static_cast<int>(shift));
   }
 
   T value() const { return shifted(significand, exponent); }
