@@ -457,7 +457,7 @@ struct eight_answers {
 };
 
 CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d phi, __m512d phi_factor,
-                                                __m512d dy_factor, const eight_terms& terms,
+                                                __m512d dy_factor, __mmask8 phi_moved, const eight_terms& terms,
                                                 const eight_decision& decision) {
   const __m512d x = terms.x, z = terms.z, root = terms.root;
   const __mmask8 no_contact_before = terms.no_contact_before, contact_before = decision.contact_before;
@@ -491,8 +491,7 @@ CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d p
   const __m512d quotient = _mm512_mul_pd(impact_numerator.high, inverse);
   // fma(-q, b, c) as fnmadd, -fma(a, b, c) as fnmsub: negations are exact, so the same roundings
   const __m512d residual = _mm512_fnmadd_pd(quotient, impact_denominator, impact_numerator.high);
-  // lane()'s products with a subnormal phi from normal factors, phi_factor being phi 2^64
-  const __mmask8 phi_moved = _mm512_cmp_pd_mask(phi_factor, phi, _CMP_NEQ_UQ);
+  // lane()'s products with a subnormal phi from normal factors (phi_moved: phi_factor is phi 2^64)
   const __m512d twice_low = _mm512_mask_blend_pd(phi_moved, _mm512_add_pd(one_plus_phi.low, one_plus_phi.low),
                                                  _mm512_mul_pd(two, phi_factor));
   const __m512d quotient_factor =
@@ -538,6 +537,12 @@ CONTACT_BATCH_INLINE rescaled_answers rescaled_eight(__m512i u_bits, __m512i dy_
   auto is_normal = [&](__m512i magnitude) {  // layout::is_normal, per lane
     return _mm512_cmplt_epu64_mask(_mm512_sub_epi64(magnitude, least_normal), normal_span);
   };
+  const __m512i second_normal_binade = _mm512_set1_epi64(std::int64_t(layout::second_normal_binade));
+  const __m512i span_above_least_binade =
+      _mm512_set1_epi64(std::int64_t((layout::exponent_field << layout::significand_bits) - layout::second_normal_binade));
+  auto is_normal_above_least_binade = [&](__m512i magnitude) {  // layout::is_normal_above_least_binade, per lane
+    return _mm512_cmplt_epu64_mask(_mm512_sub_epi64(magnitude, second_normal_binade), span_above_least_binade);
+  };
 
   // band_rescaling(): the shift by phi's band, and the lanes it fits
   const __m512i abs_u = _mm512_andnot_si512(sign_bits, u_bits), abs_dy = _mm512_andnot_si512(sign_bits, dy_bits);
@@ -574,19 +579,14 @@ CONTACT_BATCH_INLINE rescaled_answers rescaled_eight(__m512i u_bits, __m512i dy_
 
   const eight_terms terms = first_terms(u, dy, phi_factor, dy_factor);
   const eight_decision decision = decide_eight(u, dy, phi_factor, dy_factor, terms, fits);
-  const eight_answers answers = answer_eight(u, dy, phi, phi_factor, dy_factor, terms, decision);
+  const eight_answers answers = answer_eight(u, dy, phi, phi_factor, dy_factor, subnormal_phi, terms, decision);
   const __m512d s = answers.s;
 
   // scaled_back(): s moves back where it is 0, or normal before and after
   const __m512i s_bits = _mm512_castpd_si512(s);
   const __m512i abs_s = _mm512_andnot_si512(sign_bits, s_bits);
   const __mmask8 s_zero = _mm512_cmpeq_epi64_mask(abs_s, _mm512_setzero_si512());
-  const __m512i second_normal_binade = _mm512_set1_epi64(std::int64_t(layout::second_normal_binade));
-  const __m512i span_above_least_binade =
-      _mm512_set1_epi64(std::int64_t((layout::exponent_field << layout::significand_bits) - layout::second_normal_binade));
-  const __mmask8 above_least_binade =  // layout::is_normal_above_least_binade, per lane
-      _mm512_cmplt_epu64_mask(_mm512_sub_epi64(abs_s, second_normal_binade), span_above_least_binade);
-  const __mmask8 s_back_normal = (above_least_binade & is_normal(_mm512_sub_epi64(abs_s, shift))) | s_zero;
+  const __mmask8 s_back_normal = (is_normal_above_least_binade(abs_s) & is_normal(_mm512_sub_epi64(abs_s, shift))) | s_zero;
   const __m512d s_back = _mm512_castsi512_pd(_mm512_mask_sub_epi64(s_bits, __mmask8(~s_zero), s_bits, shift));
 
   return {s_back, answers.which, __mmask8(fits & s_back_normal)};
@@ -708,7 +708,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     const __m512d u = l.u, dy = l.dy, phi = l.phi;
     // every lane inside is decided, by the filter or exactly
     const eight_decision decision = decide_eight(u, dy, phi, dy, l.terms, l.inside);
-    const eight_answers answers = answer_eight(u, dy, phi, phi, dy, l.terms, decision);
+    const eight_answers answers = answer_eight(u, dy, phi, phi, dy, __mmask8(0), l.terms, decision);
     _mm512_storeu_pd(s_out + i, answers.s);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i), answers.which);
     // the lanes outside, noted for solve_pending, out of line, so that the hot
