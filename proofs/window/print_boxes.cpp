@@ -4,8 +4,9 @@
 //   TYPE NAME P Q TOP LOWEST IMPACT_LOWEST PHI_MAY_BE_ZERO
 // phi in [2^P, 2^(Q+1)] (or 0 where the last field is 1); |u|, |dy| are 0 or in
 // [2^LOWEST, 2^TOP]; in an impact on a band, u in [2^(TOP-1), 2^TOP] and gap = -dy
-// in [2^IMPACT_LOWEST, 2^TOP] (in the plain window, which moves nothing, as u and dy). A band with LOWEST > TOP admits no input and is printed
-// all the same, so that the runner can say it skipped it.
+// in [2^IMPACT_LOWEST, 2^TOP] (in the plain window, which moves nothing, as u
+// and dy). A band with LOWEST > TOP admits no input and is printed all the
+// same, so that the runner can say it skipped it.
 #include <cstdio>
 
 #include "contact/detail/window.hpp"

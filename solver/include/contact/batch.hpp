@@ -205,7 +205,7 @@ CONTACT_BATCH_INLINE detail::normal_factors<T> product_factors(T phi, T dy) {
     static_assert(detail::phi_bands<T>::table[0].lowest - 64 >= std::numeric_limits<T>::min_exponent);
     return detail::normal_factors_of(phi, dy);
   } else {
-    return {phi, dy, T(1), false};
+    return detail::factors_of<false>(phi, dy);
   }
 }
 
@@ -228,7 +228,7 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const U no_contact_before = mask<T>(dy <= 0);
   // phi's two products with dy, phi |dy| and phi (2 dy), as phi_factor times
   // dy_factor: the same exact products, so the same roundings.
-  const auto factors = rescaled ? product_factors(phi, dy) : detail::normal_factors<T>{phi, dy, T(1), false};
+  const auto factors = rescaled ? product_factors(phi, dy) : detail::factors_of<false>(phi, dy);
   const T phi_factor = factors.phi, dy_factor = factors.x;
 
   // Both square roots in one: (A.30) impact has stable_form::impact's

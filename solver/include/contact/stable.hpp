@@ -473,8 +473,8 @@ template <bool both_normal, class T>
   if (is_subnormal_phi(phi)) [[unlikely]] return solve_moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
   // the unmoved signs decide sooner; a subnormal u or dy, though, would cost
   // the early estimate a microcode assist, and the moved ones are normal
-  const solution<T> inside = both_normal ? solve_cases<true, true>(moved_u, moved_dy, phi, u, dy)
-                                         : solve_cases<true, true>(moved_u, moved_dy, phi, moved_u, moved_dy);
+  const solution<T> inside =
+      solve_cases<true, true>(moved_u, moved_dy, phi, both_normal ? u : moved_u, both_normal ? dy : moved_dy);
   if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
   return moved_back(inside, u, dy, phi, shift);
 }

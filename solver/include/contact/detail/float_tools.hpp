@@ -312,7 +312,7 @@ normal_factors<T> normal_factors_of(const T& phi, const T& x) {
     const auto moved = subnormal_phi_factors(phi, x);
     return {select(subnormal, moved.phi, phi), select(subnormal, moved.x, x), select(subnormal, moved.down, T(1)), subnormal};
   } else {
-    return {phi, x, T(1), false};
+    return factors_of<false>(phi, x);
   }
 }
 
