@@ -16,12 +16,12 @@
 // or overflowing s; NaN, infinity, phi <= 0) are solved by the scalar
 // contact::solve_stable.
 //
-// The exact criterion of (A.21), u + dy - phi dy >= 0, is what stable.hpp
-// decides with an exact expansion (two_prod, then Shewchuk's grow-expansion).
-// Here a floating-point filter with a proven error bound decides every lane
-// whose sum is not within a few ulps of 0; the lanes it cannot decide (u
-// within a few ulps of dy (phi - 1)) take the same exact expansion, in vector
-// code, on the vectors that hold one. Both decisions are exact, so they agree.
+// The exact criterion of (A.21), u + dy - phi dy >= 0, is decided as
+// stable.hpp decides it: its pre-test (detail::estimate_contact, an fma
+// against a proven margin) decides every lane whose sum is not within about
+// an ulp of 0; the lanes it cannot decide (u within about an ulp of
+// dy (phi - 1)) take the same exact expansion (two_prod, then Shewchuk's
+// grow-expansion), in vector code, on the vectors that hold one.
 //
 // Vectorisation needs an fma instruction (x86-64-v3: -march=x86-64-v3 or
 // -mfma) and -fno-math-errno (so that sqrt is an instruction without an errno
@@ -213,7 +213,7 @@ CONTACT_BATCH_INLINE detail::normal_factors<T> product_factors(T phi, T dy) {
 // solve_stable's, and zero if the lane must be redone: it lies outside the
 // vector window (with `rescaled`: u and dy cannot move into phi's band box, or
 // s cannot move back), or, without `exact_decision`, (A.21)'s exact sum is so
-// close to 0 that the filter below cannot tell its sign; those lanes, and only
+// close to 0 that the pre-test below cannot tell its sign; those lanes, and only
 // those, are also marked `undecided`, for a pass with `exact_decision`.
 // With `rescaled`, u and dy first move by phi's band, and s back at the end.
 template <bool rescaled, bool exact_decision = false, class T>
@@ -241,24 +241,17 @@ CONTACT_BATCH_INLINE bits_t<T> lane(T u_in, T dy_in, T phi, T& s_out, std::make_
   const T z = x * pick(no_contact_before, a, dy);        // impact: push (u - gap); release: phi dy^2
   const T root = std::sqrt(std::fma(u, u, T(4) * z));
 
-  // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly. With a = fl(u + dy),
-  // b = fl(a - fl(phi dy)), the exact sum differs from b by at most
-  // 2^-p (|a| + |b| + phi dy) (p = precision), so |b| > 2^(3-p) (|a| + phi dy)
-  // gives its sign. The lanes it cannot decide, near the boundary, fail the
-  // passes without `exact_decision`; a pass with it decides them by the exact
-  // sum, as solve_stable does (phi dy as two_prod's exact pair; in the window
-  // and the phi bands neither its low part nor a partial sum under- or
-  // overflows, proofs/gappa/window/pretest.g.in). It runs only on blocks
-  // that need it: the exact sum costs about as much as the rest of the lane. The bound needs phi dy and the bound
-  // itself normal (sums round relatively even when subnormal). Inside the
-  // vector window they are. On the rescaled path phi's band has
-  // dy >= 2^lowest >= 2^(emin - Pe + 2p - 2) (phi_bands::of; phi >= 2^P,
-  // Pe = max(P, emin)), so phi dy >= 2^(emin + p - 1) (P >= emin - p + 1 when
-  // P < emin) and the bound >= 2^(emin + 2).
-  const T b = a - x;  // on dy > 0 lanes, x = phi dy >= 0
-  constexpr T filter = T(8) * std::numeric_limits<T>::epsilon() / T(2);  // 2^(3-p)
-  const U decided = mask<T>(std::fabs(b) > (std::fabs(a) + x) * filter);
-  U stays = mask<T>(b > 0);
+  // (A.21) stays in contact iff u + dy - phi dy >= 0 exactly: solve_stable's
+  // pre-test (detail::estimate_contact) decides the lanes outside its margin.
+  // The lanes it cannot decide, near the boundary, fail the passes without
+  // `exact_decision`; a pass with it decides them by the exact sum, as
+  // solve_stable does (phi dy as two_prod's exact pair; in the window and the
+  // phi bands neither its low part nor a partial sum under- or overflows,
+  // proofs/gappa/window/pretest.g.in). It runs only on blocks that need it:
+  // the exact sum costs about as much as the rest of the lane.
+  const auto [estimate, margin] = detail::estimate_contact(a, phi_factor, dy_factor);
+  const U decided = mask<T>(std::fabs(estimate) > margin);
+  U stays = mask<T>(estimate > 0);
   if constexpr (exact_decision) {
     const auto phi_dy = detail::two_prod(phi_factor, dy_factor);
     const T terms[4] = {u, dy, T(-phi_dy.high), T(-phi_dy.low)};
@@ -344,7 +337,7 @@ template <class T>
   using case_number = std::make_signed_t<bits_t<T>>;
   case_number cases[block];
   bits_t<T> solved[block], undecided[block];
-  // lanes inside the window that the filter left undecided need the exact
+  // lanes inside the window that the pre-test left undecided need the exact
   // pass whatever the rescaled pass finds: it runs at once, without the other
   bits_t<T> any_undecided = bits_t<T>(undecided_inside);
   if (!undecided_inside)
@@ -404,21 +397,24 @@ CONTACT_BATCH_INLINE eight_terms first_terms(__m512d u, __m512d dy, __m512d phi_
   return t;
 }
 
-// (A.21)'s decision on eight lanes: lane()'s filter, b = fl(fl(u + dy) - phi dy)
-// against its bound, and `stays` = b > 0 where the filter decides.
+// (A.21)'s decision on eight lanes: detail::estimate_contact's pre-test,
+// fma(-phi dy, u + dy) against eps |u + dy|, and `stays` = estimate > 0 where
+// it decides.
 struct eight_decision {
   __mmask8 contact_before, decided, stays;
 };
 
-CONTACT_BATCH_INLINE eight_decision filter_eight(__m512d dy, const eight_terms& terms) {
+CONTACT_BATCH_INLINE eight_decision pretest_eight(__m512d dy, __m512d phi_factor, __m512d dy_factor,
+                                                  const eight_terms& terms) {
   const __m512d zero = _mm512_setzero_pd(), sign_bit = _mm512_set1_pd(-0.0);
-  const __m512d filter = _mm512_set1_pd(8 * std::numeric_limits<double>::epsilon() / 2);  // 2^(3-p), as in lane()
-  const __m512d b = _mm512_sub_pd(terms.a, terms.x);
-  const __m512d bound = _mm512_mul_pd(_mm512_add_pd(_mm512_andnot_pd(sign_bit, terms.a), terms.x), filter);
+  // fnmadd: -(phi_factor dy_factor) + a, rounded once, as fma(-phi_factor, dy_factor, a)
+  const __m512d estimate = _mm512_fnmadd_pd(phi_factor, dy_factor, terms.a);
+  const __m512d margin =
+      _mm512_mul_pd(_mm512_set1_pd(std::numeric_limits<double>::epsilon()), _mm512_andnot_pd(sign_bit, terms.a));
   eight_decision d;
   d.contact_before = _mm512_cmp_pd_mask(dy, zero, _CMP_GT_OQ);
-  d.decided = _mm512_cmp_pd_mask(_mm512_andnot_pd(sign_bit, b), bound, _CMP_GT_OQ);
-  d.stays = _mm512_mask_cmp_pd_mask(d.contact_before, b, zero, _CMP_GT_OQ);
+  d.decided = _mm512_cmp_pd_mask(_mm512_andnot_pd(sign_bit, estimate), margin, _CMP_GT_OQ);
+  d.stays = _mm512_mask_cmp_pd_mask(d.contact_before, estimate, zero, _CMP_GT_OQ);
   return d;
 }
 
@@ -436,13 +432,13 @@ CONTACT_BATCH_INLINE __mmask8 exact_sum_nonnegative_eight(__m512d u, __m512d dy,
   return _mm512_cmp_pd_mask(leading, _mm512_setzero_pd(), _CMP_NLT_UQ);  // !(leading < 0)
 }
 
-// The filter's decision, completed by the exact one on the lanes of `lanes`
+// The pre-test's decision, completed by the exact one on the lanes of `lanes`
 // it leaves undecided. Those are rare but for inputs within a few ulps of the
 // contact boundary, where nearly every vector holds one: a branch, taken on
 // such vectors only.
 CONTACT_BATCH_INLINE eight_decision decide_eight(__m512d u, __m512d dy, __m512d phi_factor, __m512d dy_factor,
                                                  const eight_terms& terms, __mmask8 lanes) {
-  eight_decision d = filter_eight(dy, terms);
+  eight_decision d = pretest_eight(dy, phi_factor, dy_factor, terms);
   const __mmask8 undecided = lanes & d.contact_before & ~d.decided;
   if (undecided != 0) [[unlikely]] {
     d.stays = (d.stays & d.decided) | (exact_sum_nonnegative_eight(u, dy, phi_factor, dy_factor) & ~d.decided);
@@ -706,7 +702,7 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     const up_to_root l = next;
     if (i + 16 <= n) next = start(i + 8);
     const __m512d u = l.u, dy = l.dy, phi = l.phi;
-    // every lane inside is decided, by the filter or exactly
+    // every lane inside is decided, by the pre-test or exactly
     const eight_decision decision = decide_eight(u, dy, phi, dy, l.terms, l.inside);
     const eight_answers answers = answer_eight(u, dy, phi, phi, dy, __mmask8(0), l.terms, decision);
     _mm512_storeu_pd(s_out + i, answers.s);

@@ -148,24 +148,42 @@ int sign_of_dominant_binade(const T& u, const T& dy, const T& phi) {
   return 0;
 }
 
-// (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0. phi dy
-// enters as the exact pair of two_prod; the sign is then that of an exact sum.
-//
-// Most inputs are far from the boundary: e = (u + dy) - phi dy in two roundings
-// is within eps (|u + dy| + |e|) of the exact value, so outside the margin
-// 4 eps (|u| + |dy| + |phi dy|) its sign is the exact sign, and only inputs
-// within a few ulps of the boundary pay for the exact sum.
+// (A.21)'s pre-test: the sign of the exact sum u + dy - phi dy from two
+// roundings, where they tell it. With sum = fl(u + dy) and estimate =
+// fma(-phi, dy, sum) (phi dy as phi_factor dy_factor, the same exact product),
+// the estimate has the sign of the fma's exact value sum - phi dy (rounding
+// keeps signs), which differs from the exact sum by sum's rounding error
+// alone, at most 2^-p |sum|. So where |estimate| > margin = eps |sum| the
+// estimate's sign is the exact one (decision/pretest_margin, which allows for
+// the margin's underflow: sum is exact there). Only inputs within about an ulp
+// of the boundary are left to the exact sum. The scalar path and both batch
+// kernels decide by it. (For cpp_bin_float, whose fma rounds its low-order
+// parts once more, the estimate's sign can differ from its exact value's only
+// where that is below 2^-2p (|sum| + |phi dy|), far inside the margin.)
+template <class T>
+struct contact_estimate {
+  T estimate, margin;
+};
+
+template <class T>
+contact_estimate<T> estimate_contact(const T& sum, const T& phi_factor, const T& dy_factor) {
+  using std::fabs;
+  return {fused_multiply_add(-phi_factor, dy_factor, sum), std::numeric_limits<T>::epsilon() * fabs(sum)};
+}
+
+// (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0, where
+// the pre-test tells it: +1, -1, or 0 within the margin.
 template <bool phi_is_subnormal = false, class T>
-int estimated_contact_sign(const T& u, const T& dy, const T& phi) {  // +1, -1, or 0: within the margin
+int estimated_contact_sign(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   const auto factors = factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors (impact_with_square_root)
-  const T estimate = fused_multiply_add(-factors.phi, factors.x, T(u + dy));
-  // dy >= 0 and phi >= 0 wherever it is asked: |dy| = dy and |phi dy| = phi dy, as values
-  const T margin = 4 * std::numeric_limits<T>::epsilon() * (fabs(u) + dy + factors.phi * factors.x);
+  const auto [estimate, margin] = estimate_contact(T(u + dy), factors.phi, factors.x);
   if (fabs(estimate) > margin) return estimate > 0 ? 1 : -1;
   return 0;
 }
 
+// Otherwise phi dy enters as the exact pair of two_prod, and the sign is that
+// of an exact sum.
 template <bool plain, class T>
 bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   if constexpr (plain) {

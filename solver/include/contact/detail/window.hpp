@@ -146,7 +146,7 @@ struct phi_bands {
                                  emin - Pe + 2 * p - 2,  // two_prod's low part, the fmas' exact values
                                  ceil_half(emin),        // u^2, the discriminants
                                  emin - P,               // phi dy
-                                 emin + p - 1});         // u + dy, the margin
+                                 emin + p - 1});         // u + dy, a multiple of 2^emin
     // with u in [2^(top-1), 2^top): push = phi gap and, where gap is near u,
     // push (u - gap) >= 2^(P + 2 (top - 2) - p + 1); push's error a multiple of
     // the least subnormal; gap normal, so that it moves on its bits
