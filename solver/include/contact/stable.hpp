@@ -458,12 +458,16 @@ template <class T>
 // The band route for a subnormal phi (the first band): the formulas form
 // their products with phi from normal factors (stable_form::impact_with_square_root),
 // out of line, as few inputs have one. Its moved u and dy, normal, stand for
-// the unmoved ones too.
+// the unmoved ones too. The pre-test (estimate_contact) always decides here,
+// so no input comes back undecided: with dy > 0 in binade e, a non-zero
+// u + dy is a multiple of 2^(e - p) (u near -dy lies in dy's binade or the
+// one below), so |fl(u + dy)| >= 2^(e - p), while phi dy < 2^(emin + e + 1)
+// lies below 2^(-p - 2) of it: the estimate is fl(u + dy) within far less
+// than the margin's eps |fl(u + dy)| of it; and where u + dy = 0 the margin
+// is 0 and the estimate -phi dy, normal in the band, is not.
 template <class T>
 [[gnu::noinline]] solution<T> solve_moved_subnormal_phi(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
-  const solution<T> inside = solve_cases<true, true, true>(moved_u, moved_dy, phi, moved_u, moved_dy);
-  if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
-  return moved_back(inside, u, dy, phi, shift);
+  return moved_back(solve_cases<true, true, true>(moved_u, moved_dy, phi, moved_u, moved_dy), u, dy, phi, shift);
 }
 
 // The band route from the binades of the larger and the smaller non-zero one
