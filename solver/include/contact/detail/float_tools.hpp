@@ -9,6 +9,10 @@
 #include <limits>
 #include <type_traits>
 
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
+
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include <boost/math/special_functions/next.hpp>
@@ -253,9 +257,21 @@ struct binary_layout {
 // condition ? if_true : if_false without a branch, for conditions that are a
 // coin toss on the inputs that reach them (the sign of u, which side of a clamp
 // a rounding lands on). A compiler may turn ?: into a branch, and does (GCC 12
-// at -O3, on release's operands); on bits it cannot. Other types take ?:.
+// at -O3, on release's operands); on a blend it cannot. With AVX-512 the
+// values stay in their vector registers and the condition becomes a mask
+// register (measured on physical inputs, where each solve makes one to three:
+// 10.1 -> 9.7 ns per solve, minimum of 6 runs; SSE4.1's blendv gained nothing
+// on the same machine); otherwise the blend is of bits, through the integer
+// registers. Other types take ?:.
 template <class T>
 T select(bool condition, const T& if_true, const T& if_false) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_same_v<T, double>) {
+    return _mm_cvtsd_f64(_mm_mask_blend_pd(__mmask8(condition), _mm_set_sd(if_false), _mm_set_sd(if_true)));
+  } else if constexpr (std::is_same_v<T, float>) {
+    return _mm_cvtss_f32(_mm_mask_blend_ps(__mmask8(condition), _mm_set_ss(if_false), _mm_set_ss(if_true)));
+  } else  // (the chain goes on below: no other branch is instantiated for double and float)
+#endif
   if constexpr (hardware_binary<T>) {
     using bits = typename binary_layout<T>::bits;
     const bits chosen = bits(0) - bits(condition);  // all ones or all zeros
