@@ -255,8 +255,8 @@ void expect_band_lanes_solved_in_vector_code(const lanes<T>& in) {
     if (lane_solved && !box && ++outside_boxes <= 10)
       ADD_FAILURE() << std::hexfloat << "outside every band box: u=" << u << " dy=" << dy << " phi=" << phi;
     // float's subnormal phi straddles two bands; the lane leaves it to the scalar path
-    constexpr int window = contact::detail::common_window<T>;
-    const bool phi_outside_vector_window = (std::ilogb(phi) >= window || std::ilogb(phi) < -window) &&
+    constexpr int least = contact::detail::common_window_least_phi<T>, width = 2 * contact::detail::common_window<T>;
+    const bool phi_outside_vector_window = (std::ilogb(phi) >= least + width || std::ilogb(phi) < least) &&
                                            (std::is_same_v<T, double> || std::isnormal(phi));
     if (box && phi_outside_vector_window && (std::isnormal(scalar.s) || scalar.s == 0)) {
       ++eligible;

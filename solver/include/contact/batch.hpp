@@ -83,7 +83,7 @@ CONTACT_BATCH_INLINE T pick(bits_t<T> m, T a, T b) {
 }
 
 // The lane can take the branch-free path: u, dy and phi lie in the common
-// window (|x| in [2^-E, 2^E), E = detail::common_window<T>, normal, phi > 0), inside detail::safe_window<T>, so the scalar path runs the
+// window (detail::common_window<T>: normal, phi > 0), inside detail::safe_window<T>, so the scalar path runs the
 // same plain-T operations on these lanes; NaN, infinity, zero, phi < 0 and the
 // extreme magnitudes all go to the rescaled pass and the scalar fix-up.
 template <class T>
@@ -662,7 +662,8 @@ struct pending_lanes {
 inline void solve_lanes_avx512(const double* __restrict u_in, const double* __restrict dy_in, const double* __restrict phi_in,
                       double* __restrict s_out, int* __restrict which_out, std::ptrdiff_t n) {
   const __m512i sign_bits = _mm512_set1_epi64(std::int64_t(sign_mask<double>));
-  const __m512i lowest = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest<double>));  // 2^-E
+  const __m512i lowest_uv = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest_uv<double>));  // 2^L
+  const __m512i lowest_phi = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest_phi<double>));  // 2^M
   const __m512i width = _mm512_set1_epi64(std::int64_t(detail::common_window_width<double>));
   std::ptrdiff_t i = 0;
   // 8 lanes up to their square root, which is issued one vector ahead
@@ -677,9 +678,9 @@ inline void solve_lanes_avx512(const double* __restrict u_in, const double* __re
     const __m512i phi_bits = _mm512_loadu_si512(phi_in + j);
     // inside_window()'s test: the OR of the three offsets from 2^-E (a negative
     // or NaN phi fails it)
-    const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_andnot_si512(sign_bits, u_bits), lowest),
-                                                     _mm512_sub_epi64(_mm512_andnot_si512(sign_bits, dy_bits), lowest),
-                                                     _mm512_sub_epi64(phi_bits, lowest), 0xFE);
+    const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_andnot_si512(sign_bits, u_bits), lowest_uv),
+                                                     _mm512_sub_epi64(_mm512_andnot_si512(sign_bits, dy_bits), lowest_uv),
+                                                     _mm512_sub_epi64(phi_bits, lowest_phi), 0xFE);
     l.inside = _mm512_cmplt_epu64_mask(spread, width);
     // The lanes outside are answered again later, rescaled; here they take 1
     // for u, dy and phi (masked loads: no extra arithmetic), so that none of
