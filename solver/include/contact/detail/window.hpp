@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <type_traits>
 
@@ -207,22 +208,28 @@ inline constexpr int common_window_least_phi = std::is_same_v<T, double> ? -128 
 static_assert(std::has_single_bit(unsigned(2 * common_window<double>)) &&
                   std::has_single_bit(unsigned(2 * common_window<float>)),
               "one comparison of the OR");
-static_assert([] {  // inside the plain window [2^-E, 2^E]
-  return common_window_least_uv<double> >= -plain_window<double> && common_window_least_phi<double> >= -plain_window<double> &&
-         common_window_least_uv<double> + 2 * common_window<double> <= plain_window<double> &&
-         common_window_least_phi<double> + 2 * common_window<double> <= plain_window<double> &&
-         common_window_least_uv<float> >= -plain_window<float> && common_window_least_phi<float> >= -plain_window<float> &&
-         common_window_least_uv<float> + 2 * common_window<float> <= plain_window<float> &&
-         common_window_least_phi<float> + 2 * common_window<float> <= plain_window<float>;
-}());
+
+// both ranges inside the plain window [2^-E, 2^E]
+template <class T>
+consteval bool common_window_inside_plain_window() {
+  constexpr long E = plain_window<T>, width = 2 * common_window<T>;
+  for (const long least : {common_window_least_uv<T>, common_window_least_phi<T>})
+    if (least < -E || least + width > E) return false;
+  return true;
+}
+static_assert(common_window_inside_plain_window<double>() && common_window_inside_plain_window<float>());
+
+// bits(2^binade) for a normal power of two
+template <class T>
+consteval typename binary_layout<T>::bits bits_of_power_of_two(int binade) {
+  return typename binary_layout<T>::bits(binary_layout<T>::bias + binade) << binary_layout<T>::significand_bits;
+}
 
 template <class T>
-inline constexpr typename binary_layout<T>::bits common_window_lowest_uv =  // bits(2^L)
-    typename binary_layout<T>::bits(binary_layout<T>::bias + common_window_least_uv<T>) << binary_layout<T>::significand_bits;
+inline constexpr typename binary_layout<T>::bits common_window_lowest_uv = bits_of_power_of_two<T>(common_window_least_uv<T>);  // 2^L
 
 template <class T>
-inline constexpr typename binary_layout<T>::bits common_window_lowest_phi =  // bits(2^M)
-    typename binary_layout<T>::bits(binary_layout<T>::bias + common_window_least_phi<T>) << binary_layout<T>::significand_bits;
+inline constexpr typename binary_layout<T>::bits common_window_lowest_phi = bits_of_power_of_two<T>(common_window_least_phi<T>);  // 2^M
 
 template <class T>
 inline constexpr typename binary_layout<T>::bits common_window_width =  // 2C binades of bit patterns
