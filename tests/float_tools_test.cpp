@@ -1,6 +1,8 @@
 // The stable path's arithmetic helpers on their own: ulp steps that saturate,
 // and scaled<T>, whose every operation must round exactly as T does while its
 // exponent never overflows or underflows.
+#include <random>
+
 #include "contact/detail/scaled.hpp"
 #include "exhaustive/mini_float.hpp"
 #include "harness.hpp"
@@ -248,6 +250,50 @@ TYPED_TEST(SquareRoot, IsCorrectlyRounded) {
 // The weakness square_root works around: libquadmath's own sqrtq is faithful,
 // not correctly rounded. Over squares of random float128 significands, some
 // roots come back one ulp off.
+// Boost 1.74's cpp_bin_float misrounds a sum whose smaller term lies a
+// quarter to half an ulp below the larger, with the other sign (half the time
+// one ulp off). Its fma is emulated (Dekker's product, then sums), and ends in
+// such a sum; detail::sum_of_head_and_tail rounds it instead. Found by
+// StableProperty.ZeroStiffnessGivesMinusU on u = -6.0347e270: sqrt(fma(u, u, 0))
+// was not |u|.
+TEST(FusedMultiplyAdd, CppBinFloatWithAZeroAddendIsTheRoundedProduct) {
+  using T = bin_float_50;
+  const T u("-6.0347e270");
+  EXPECT_EQ(detail::fused_multiply_add(u, u, T(0)), u * u);
+  EXPECT_EQ(detail::square_root(detail::fused_multiply_add(u, u, T(0))), -u);
+  std::mt19937_64 source(41);
+  std::uniform_real_distribution<double> unit(0.5, 1.0);
+  long mismatches = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const T a = ldexp(T(unit(source)) + ldexp(T(unit(source)), -60) + ldexp(T(unit(source)), -120), 900);
+    const T b = ldexp(T(unit(source)) + ldexp(T(unit(source)), -60) + ldexp(T(unit(source)), -120), -20);
+    mismatches += detail::fused_multiply_add(a, b, T(0)) != a * b;
+    // a head of 0: the product's own rounding error, exactly (here far below 1)
+    const T small = ldexp(a, -1200);
+    mismatches += detail::fused_multiply_add(small, b, T(-(small * b))) != detail::two_prod(small, b).low;
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+// Every tail below an ulp of a head, against the same sum in twice the precision
+// rounded once: powers of two among the heads (where the spacing halves below).
+TEST(FusedMultiplyAdd, HeadAndTailRoundToNearestInCppBinFloat) {
+  using T = bin_float_50;
+  using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<120>, boost::multiprecision::et_off>;
+  std::mt19937_64 source(42);
+  std::uniform_real_distribution<double> unit(0.5, 1.0), fraction(-1.0, 1.0);
+  long mismatches = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const T head = i % 4 == 0 ? T(i % 8 == 0 ? 0.5 : -0.5)
+                              : T(unit(source)) + ldexp(T(unit(source)), -60) + ldexp(T(unit(source)), -120);
+    const T ulp = ldexp(T(1), 1 - std::numeric_limits<T>::digits);  // of a head in [0.5, 1)
+    const T tail = ulp * T(fraction(source)) * (i % 3 == 0 ? T(0.25) : T(1)) + ldexp(ulp * T(fraction(source)), -70);
+    const T nearest = T(Wide(head) + Wide(tail));
+    mismatches += detail::sum_of_head_and_tail(head, tail) != nearest;
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
 TEST(SquareRoot, Float128LibrarySqrtIsNotAlwaysCorrectlyRounded) {
   harness::seeded_source source(20261123);
   int off = 0;

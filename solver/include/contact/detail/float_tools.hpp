@@ -83,6 +83,27 @@ exact_pair<T> two_prod(const T& a, const T& b) {
   }
 }
 
+// head + tail rounded to nearest, for |tail| below an ulp of head, where
+// Boost 1.74's cpp_bin_float adds wrongly: a tail between a quarter and half
+// an ulp of opposite sign (the sum's guard bit set, its sticky bits lost in
+// the borrow) comes back as a tie and rounds to even, one ulp off half the
+// time. Below half an ulp the nearest is head itself, or, for a power of two
+// head and a tail of opposite sign from a quarter of its ulp up, its lower
+// neighbour (spaced half as far); a quarter exactly is a tie, to head, even.
+template <class T>
+T sum_of_head_and_tail(const T& head, const T& tail) {
+  using std::fabs;
+  using std::frexp;
+  using std::ldexp;
+  int binade = 0;
+  const T fraction = frexp(head, &binade);  // head = fraction 2^binade, |fraction| in [0.5, 1)
+  const T half_ulp = ldexp(T(1), binade - precision_of<T>() - 1);
+  if (!(fabs(tail) < half_ulp) || head == 0) return head + tail;
+  const bool lower_binade = fabs(fraction) == T(0.5) && (tail < 0) != (head < 0);
+  if (lower_binade && fabs(tail) > half_ulp / 2) return head + (tail < 0 ? -half_ulp : half_ulp);
+  return head;
+}
+
 // a * b + c with one rounding where T's fma is fused; otherwise the exact
 // product and sum, rounded once at the end but for the low-order parts (within
 // an ulp, and exact where a * b + c cancels, which is where it matters).
@@ -94,7 +115,7 @@ T fused_multiply_add(const T& a, const T& b, const T& c) {
   } else {
     const auto product = two_prod(a, b);
     const auto sum = two_sum(product.high, c);
-    return sum.high + (sum.low + product.low);
+    return sum_of_head_and_tail(sum.high, T(sum.low + product.low));
   }
 }
 
