@@ -6,15 +6,19 @@
 // window, which holds every physically meaningful input) are solved without a
 // branch: every lane evaluates the operations of all four cases, in the same
 // order and with the same fma as stable.hpp, and selects its own result with
-// masks, so the compiler vectorises the loop. A block (or, with AVX-512, a
-// vector of 8 lanes) with lanes outside that window runs again rescaled: u
-// and dy move by one power of two to where phi's band leaves them room and s
+// masks, so the compiler vectorises the loop. A block with lanes outside that
+// window runs again rescaled (with AVX-512, a vector of 8 lanes with such a
+// lane runs rescaled instead of plain): u and dy move by one power of two to where phi's band leaves them room and s
 // moves back, exactly (the homogeneity and the bands that solve_stable uses
-// outside its plain window). The lanes that even that cannot answer (phi in
-// no band: phi >= 2^1021 in double, 2^125 in float; subnormal phi in float;
-// zero or subnormal u or dy; u and dy too far apart for the band; a subnormal
-// or overflowing s; NaN, infinity, phi <= 0) are solved by the scalar
-// contact::solve_stable.
+// outside its plain window). The lanes that even that cannot answer are
+// solved by the scalar contact::solve_stable: phi in no band (phi >= 2^1021
+// in double, 2^125 in float; phi = 0; NaN, infinity, phi < 0), u and dy too
+// far apart for the band, and a zero u or dy. The portable kernel also leaves
+// to it subnormal u or dy, subnormal phi in float, an impact using its own
+// room, free flight outside the bands, and an s that is subnormal or
+// overflows once moved back; the AVX-512 kernel (double) answers those as
+// solve_stable does, but for an s in the least normal binade or below before
+// the move back, or in the binade 2^1024 after it.
 //
 // The exact criterion of (A.21), u + dy - phi dy >= 0, is decided as
 // stable.hpp decides it: its pre-test (detail::estimate_contact, an fma
@@ -83,9 +87,10 @@ CONTACT_BATCH_INLINE T pick(bits_t<T> m, T a, T b) {
 }
 
 // The lane can take the branch-free path: u, dy and phi lie in the common
-// window (detail::common_window<T>: normal, phi > 0), inside detail::safe_window<T>, so the scalar path runs the
-// same plain-T operations on these lanes; NaN, infinity, zero, phi < 0 and the
-// extreme magnitudes all go to the rescaled pass and the scalar fix-up.
+// window (detail::common_window<T>: normal, phi > 0), inside
+// detail::safe_window<T>, so the scalar path runs the same plain-T operations
+// on these lanes; NaN, infinity, zero, phi < 0 and the extreme magnitudes all
+// go to the rescaled pass and the scalar fix-up.
 template <class T>
 CONTACT_BATCH_INLINE bits_t<T> inside_window(T abs_u, T abs_dy, T phi) {
   return mask<T>(detail::common_window_offsets(abs_u, abs_dy, phi) < detail::common_window_width<T>);
@@ -450,6 +455,7 @@ CONTACT_BATCH_INLINE eight_decision decide_eight(__m512d u, __m512d dy, __m512d 
 struct eight_answers {
   __m512d s;
   __m256i which;
+  __mmask8 is_impact, is_contact, is_release;
 };
 
 CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d phi, __m512d phi_factor,
@@ -505,148 +511,471 @@ CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d p
   const __m256i case_impact = _mm256_set1_epi32(int(contact_case::impact)),
                 case_release = _mm256_set1_epi32(int(contact_case::release)), one_case = _mm256_set1_epi32(1);
   const __m256i higher_case = _mm256_mask_blend_epi32(no_contact_before, case_release, case_impact);
-  return {s, _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case)};
+  return {s, _mm256_mask_sub_epi32(higher_case, is_free | is_contact, higher_case, one_case), is_impact, is_contact,
+          is_release};
 }
 
-// lane<true, true> on eight lanes with AVX-512 written out, as
-// solve_lanes_avx512 writes lane<false>: the same operations in the same order
-// (first_terms, decide_eight, answer_eight), the band's table read with two
-// permutes and a blend instead of two gathers. Takes the inputs' bits, returns
-// the answers and the lanes they hold (the others need the scalar path).
-struct rescaled_answers {
+// A subnormal x as the integer k of its bits (x = k 2^-1074, which converts
+// exactly to a normal double) and offset = -1074; any other x as it is, offset
+// 0. getexp, scalef and getmant on a subnormal operand would each cost a
+// microcode assist (measured on the extreme scene, the scalar lanes left out:
+// 15 -> 8 ns per lane).
+CONTACT_BATCH_INLINE __m512d as_normal_eight(__m512d x, __m512d& offset) {
+  const __m512i magnitude =
+      _mm512_andnot_si512(_mm512_set1_epi64(std::int64_t(sign_mask<double>)), _mm512_castpd_si512(x));
+  const __mmask8 subnormal =
+      _mm512_cmplt_epu64_mask(magnitude, _mm512_set1_epi64(std::int64_t(detail::binary_layout<double>::least_normal)));
+  offset = _mm512_maskz_mov_pd(subnormal, _mm512_set1_pd(detail::phi_bands<double>::least_binade));
+  const __m512d integer = _mm512_or_pd(_mm512_cvtepu64_pd(magnitude), _mm512_and_pd(x, _mm512_set1_pd(-0.0)));
+  return _mm512_mask_blend_pd(subnormal, x, integer);
+}
+
+// x 2^k rounded once, as ldexp rounds it, for x normal or zero in binade b
+// (b >= -1074; getexp's, or -1 for a significand) and integer k. A result
+// below the normal range is rounded as the integer of its bits, x 2^(k + 1074)
+// rounded to an integer (roundscale, to nearest even; 2^52 is the least
+// normal's bits), and assembled from them, and the normal route's shift is
+// clamped where it is not taken: no operation underflows, as an underflowing
+// one costs a microcode assist (measured on far-apart lanes, far_eight alone:
+// 19.5 -> 12.2 ns per lane).
+CONTACT_BATCH_INLINE __m512d times_power_of_two_rounded(__m512d x, __m512d binade, __m512d k) {
+  constexpr double least_binade = detail::phi_bands<double>::least_binade;  // -1074
+  constexpr double least_normal_binade = std::numeric_limits<double>::min_exponent - 1;  // -1022
+  const __m512d sign_bit = _mm512_set1_pd(-0.0);
+  const __mmask8 below_normal =
+      _mm512_cmp_pd_mask(_mm512_add_pd(binade, k), _mm512_set1_pd(least_normal_binade), _CMP_LT_OQ);
+  // below 2^-62 (from binade -62 + b down) the integer rounds to 0 all the same
+  const __m512d units = _mm512_scalef_pd(_mm512_andnot_pd(sign_bit, x),
+                                         _mm512_max_pd(_mm512_sub_pd(k, _mm512_set1_pd(least_binade)),
+                                                       _mm512_sub_pd(_mm512_set1_pd(-62.0), binade)));
+  const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+  const __m512d subnormal = _mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(x, sign_bit));
+  const __m512d normal =
+      _mm512_scalef_pd(x, _mm512_max_pd(k, _mm512_sub_pd(_mm512_set1_pd(least_normal_binade), binade)));
+  return _mm512_mask_blend_pd(below_normal, normal, subnormal);
+}
+
+// phi_bands<double>' table as doubles, for the AVX-512 kernel, which reads the
+// binades of u and dy with getexp (subnormals included) and moves them with
+// scalef: per band, top - 1 (where the larger of |u|, |dy| moves), and the
+// least binade the smaller may then have, for contact and release (lowest)
+// and for an impact (impact_lowest).
+struct band_binades {
+  using bands = detail::phi_bands<double>;
+  template <int bands::band::*member, int offset = 0>
+  static constexpr std::array<double, bands::count> column = [] {
+    std::array<double, bands::count> values{};
+    for (int j = 0; j < bands::count; ++j) values[j] = bands::table[j].*member + offset;
+    return values;
+  }();
+  static constexpr const auto& top_binade = column<&bands::band::top, -1>;
+  static constexpr const auto& lowest = column<&bands::band::lowest>;
+  static constexpr const auto& impact_lowest = column<&bands::band::impact_lowest>;
+};
+
+// Eight lanes' operands up to their square root: u, dy and phi as they are in
+// the common window, else moved by phi's band (`shift` binades; 0 for the
+// lanes that stay). The lanes outside `answerable` (the vector cannot solve
+// them) take 1 for u, dy and phi, so that none of their products under- or
+// overflows: a subnormal operand or result costs a microcode assist on many
+// cores, about as much as the rest of the 8 lanes together.
+struct eight_operands {
+  __m512d u, dy, phi, phi_factor, dy_factor, shift;
+  __mmask8 phi_moved;   // a subnormal phi: phi_factor = phi 2^64, dy_factor = dy 2^-64 (product_factors)
+  __mmask8 answerable;
+  __mmask8 free_flight;  // dy <= 0 and u <= -dy for finite u, dy and phi in [+0, inf): -u, whatever the band
+  bool moved;           // some lane moved, or cannot be answered: the answers need moved_back_eight
+  eight_terms terms;
+};
+
+// solve_in_band's move on eight lanes: the larger of |u|, |dy| to 2^(top - 1)
+// by phi's band, where the smaller then lies at or above the band's least
+// binade for its case (an impact's own room where dy <= 0). Binades by getexp,
+// moves by scalef: exact, as the moved values are normal, for subnormal u and
+// dy too. The lanes of `inside` stay where they are. Zero, infinite and NaN u
+// or dy (getexp gives -inf, +inf, NaN) and phi in no band are not answerable.
+CONTACT_BATCH_INLINE eight_operands moved_operands(__m512d u, __m512d dy, __m512d phi, __mmask8 inside) {
+  using moves = band_moves<double>;
+  using layout = detail::binary_layout<double>;
+  static_assert(detail::phi_bands<double>::count == 17 && moves::subnormal_phi_in_one_band,
+                "bands 0 to 15 by permutes, 16 by a blend; a subnormal phi in band 0");
+  const __m512i phi_bits = _mm512_castpd_si512(phi);
+  const __m512i band = _mm512_srli_epi64(
+      _mm512_add_epi64(_mm512_srli_epi64(_mm512_andnot_si512(_mm512_set1_epi64(std::int64_t(sign_mask<double>)), phi_bits),
+                                         moves::significand_bits),
+                       _mm512_set1_epi64(moves::index_offset)),
+      detail::phi_bands<double>::band_bits);
+  auto look_up = [&](const auto& table) {  // table[band]; any band beyond 16 reads garbage and fails phi_in_a_band
+    const __m512d low = _mm512_loadu_pd(table.data()), high = _mm512_loadu_pd(table.data() + 8);
+    const __mmask8 in_last = _mm512_cmpeq_epi64_mask(band, _mm512_set1_epi64(16));
+    return _mm512_mask_blend_pd(in_last, _mm512_permutex2var_pd(low, band, high), _mm512_set1_pd(table[16]));
+  };
+  const __mmask8 phi_in_a_band = _mm512_cmplt_epu64_mask(_mm512_sub_epi64(phi_bits, _mm512_set1_epi64(moves::phi_least)),
+                                                         _mm512_set1_epi64(moves::phi_end - moves::phi_least));
+  constexpr int not_finite = 0x01 | 0x08 | 0x10 | 0x80;  // fpclass: quiet NaN, +inf, -inf, signalling NaN
+  const __mmask8 finite = __mmask8(~(_mm512_fpclass_pd_mask(u, not_finite) | _mm512_fpclass_pd_mask(dy, not_finite)));
+  __m512d u_offset, dy_offset;
+  const __m512d u_normal = as_normal_eight(u, u_offset), dy_normal = as_normal_eight(dy, dy_offset);
+  const __m512d u_binade = _mm512_add_pd(_mm512_getexp_pd(u_normal), u_offset);
+  const __m512d dy_binade = _mm512_add_pd(_mm512_getexp_pd(dy_normal), dy_offset);
+  const __m512d larger = _mm512_max_pd(u_binade, dy_binade), smaller = _mm512_min_pd(u_binade, dy_binade);
+  const __m512d zero = _mm512_setzero_pd();
+  const __mmask8 impact_side = _mm512_cmp_pd_mask(dy, zero, _CMP_LE_OQ);
+  const __m512d least = _mm512_mask_blend_pd(impact_side, look_up(band_binades::lowest), look_up(band_binades::impact_lowest));
+  const __m512d band_shift = _mm512_sub_pd(look_up(band_binades::top_binade), larger);
+  // free flight (dy <= 0, u <= -dy) is answered by moved_back_eight, from the
+  // input itself: its lanes take 1 here, as the others that need no move (its
+  // garbage impact formula, on a gap near u, underflowed into microcode
+  // assists: measured 8.5 -> 5.5 ns per free lane of the extreme scene)
+  const __mmask8 free_flight =
+      impact_side & _mm512_cmp_pd_mask(u, _mm512_xor_pd(dy, _mm512_set1_pd(-0.0)), _CMP_LE_OQ);
+  const __mmask8 phi_valid = _mm512_cmplt_epu64_mask(phi_bits, _mm512_castpd_si512(_mm512_set1_pd(std::numeric_limits<double>::infinity())));
+  const __mmask8 fits = finite & phi_in_a_band & ~inside & ~free_flight &
+                        _mm512_cmp_pd_mask(_mm512_add_pd(smaller, band_shift), least, _CMP_GE_OQ);
+
+  eight_operands l;
+  l.answerable = inside | fits;
+  l.free_flight = free_flight & finite & phi_valid;
+  l.moved = true;
+  l.shift = _mm512_maskz_mov_pd(fits, band_shift);
+  const __m512d one = _mm512_set1_pd(1.0);
+  l.u = _mm512_mask_scalef_pd(one, l.answerable, u_normal, _mm512_add_pd(l.shift, u_offset));
+  l.dy = _mm512_mask_scalef_pd(one, l.answerable, dy_normal, _mm512_add_pd(l.shift, dy_offset));
+  l.phi = _mm512_mask_mov_pd(one, l.answerable, phi);
+  // product_factors(): a subnormal phi as (phi 2^64) (dy 2^-64); dy 2^-64 as a
+  // product, not lane()'s quotient dy / 2^64: the same exact value, rounded
+  // once either way, without a second division
+  const __m512i one_bit = _mm512_set1_epi64(1);
+  l.phi_moved = l.answerable & _mm512_cmplt_epu64_mask(_mm512_sub_epi64(phi_bits, one_bit),
+                                                       _mm512_set1_epi64(std::int64_t(layout::least_normal - 1)));
+  l.phi_factor = _mm512_mask_mul_pd(l.phi, l.phi_moved, _mm512_cvtepi64_pd(phi_bits),
+                                    _mm512_set1_pd(std::numeric_limits<double>::denorm_min() * 0x1p64));
+  l.dy_factor = _mm512_mask_mul_pd(l.dy, l.phi_moved, l.dy, _mm512_set1_pd(0x1p-64));
+  return l;
+}
+
+// moved_back() on eight lanes: s moves back by scalef, which rounds a
+// subnormal result once, as the scaled path does, and gives +inf from
+// 2^(max_exponent + 1) up; then each case's clamps, on the unmoved u and dy
+// (moved_back_below_normal's; they change no s that is normal once moved
+// back). Free flight is answered for any valid input, moved or not, as
+// solve_in_band answers it before any band. Returns the lanes answered: not
+// those whose s, before the move back, is subnormal or in the least normal
+// binade, nor those that land in the binade 2^max_exponent, where only the
+// scaled path tells infinity from the largest double.
+struct eight_results {
   __m512d s;
   __m256i which;
   __mmask8 answered;
 };
 
-CONTACT_BATCH_INLINE rescaled_answers rescaled_eight(__m512i u_bits, __m512i dy_bits, __m512i phi_bits) {
-  using moves = band_moves<double>;
-  using layout = detail::binary_layout<double>;
-  static_assert(detail::phi_bands<double>::count == 17 && moves::subnormal_phi_in_one_band,
-                "bands 0 to 15 by permutes, 16 by a blend; a subnormal phi in band 0");
-  const __m512i sign_bits = _mm512_set1_epi64(std::int64_t(sign_mask<double>));
-  const __m512i binade_bits = _mm512_set1_epi64(std::int64_t(~significand_mask<double> & ~sign_mask<double>));
-  const __m512i least_normal = _mm512_set1_epi64(std::int64_t(layout::least_normal));
-  const __m512i normal_span =
-      _mm512_set1_epi64(std::int64_t((layout::exponent_field << layout::significand_bits) - layout::least_normal));
+CONTACT_BATCH_INLINE eight_results moved_back_eight(const eight_operands& l, const eight_answers& answers, __m512d u,
+                                                    __m512d dy) {
+  // binade of s before the move back: normal above the least binade in [-1021, 1023] (getexp of 0 is -inf)
+  const __m512d binade = _mm512_getexp_pd(answers.s);
+  const __mmask8 normal_before = _mm512_cmp_pd_mask(binade, _mm512_set1_pd(std::numeric_limits<double>::min_exponent), _CMP_GE_OQ) &
+                                 _mm512_cmp_pd_mask(binade, _mm512_set1_pd(std::numeric_limits<double>::max_exponent - 1), _CMP_LE_OQ);
+  const __mmask8 below_top = _mm512_cmp_pd_mask(_mm512_sub_pd(binade, l.shift),
+                                                _mm512_set1_pd(std::numeric_limits<double>::max_exponent), _CMP_NEQ_UQ);
+  const __mmask8 s_zero = _mm512_cmp_pd_mask(answers.s, _mm512_setzero_pd(), _CMP_EQ_OQ);
+  const __m512d sign_bit = _mm512_set1_pd(-0.0), minus_u = _mm512_xor_pd(u, sign_bit);
   const __m512i one_bit = _mm512_set1_epi64(1);
-  auto is_normal = [&](__m512i magnitude) {  // layout::is_normal, per lane
-    return _mm512_cmplt_epu64_mask(_mm512_sub_epi64(magnitude, least_normal), normal_span);
-  };
-  const __m512i second_normal_binade = _mm512_set1_epi64(std::int64_t(layout::second_normal_binade));
-  const __m512i span_above_least_binade =
-      _mm512_set1_epi64(std::int64_t((layout::exponent_field << layout::significand_bits) - layout::second_normal_binade));
-  auto is_normal_above_least_binade = [&](__m512i magnitude) {  // layout::is_normal_above_least_binade, per lane
-    return _mm512_cmplt_epu64_mask(_mm512_sub_epi64(magnitude, second_normal_binade), span_above_least_binade);
-  };
-
-  // band_rescaling(): the shift by phi's band, and the lanes it fits
-  const __m512i abs_u = _mm512_andnot_si512(sign_bits, u_bits), abs_dy = _mm512_andnot_si512(sign_bits, dy_bits);
-  const __m512i larger_binade = _mm512_and_si512(_mm512_max_epu64(abs_u, abs_dy), binade_bits);
-  const __m512i smaller_binade = _mm512_and_si512(_mm512_min_epu64(abs_u, abs_dy), binade_bits);
-  const __m512i band = _mm512_srli_epi64(
-      _mm512_add_epi64(_mm512_srli_epi64(_mm512_andnot_si512(sign_bits, phi_bits), moves::significand_bits),
-                       _mm512_set1_epi64(moves::index_offset)),
-      detail::phi_bands<double>::band_bits);
-  auto look_up = [&](const auto& table) {  // table[band]; any band beyond 16 reads garbage and fails phi_in_a_band
-    const __m512i low = _mm512_loadu_si512(table.data()), high = _mm512_loadu_si512(table.data() + 8);
-    const __m512i last = _mm512_set1_epi64(std::int64_t(table[16]));
-    const __mmask8 in_last = _mm512_cmpeq_epi64_mask(band, _mm512_set1_epi64(16));
-    return _mm512_mask_blend_epi64(in_last, _mm512_permutex2var_epi64(low, band, high), last);
-  };
-  const __mmask8 phi_in_a_band = _mm512_cmplt_epu64_mask(_mm512_sub_epi64(phi_bits, _mm512_set1_epi64(moves::phi_least)),
-                                                         _mm512_set1_epi64(moves::phi_end - moves::phi_least));
-  const __mmask8 fits = is_normal(abs_u) & is_normal(abs_dy) & phi_in_a_band &
-                        _mm512_cmple_epu64_mask(_mm512_sub_epi64(larger_binade, smaller_binade), look_up(moves::room));
-  const __m512i shift = _mm512_sub_epi64(look_up(moves::top_binade), larger_binade);
-  const __m512d u = _mm512_castsi512_pd(_mm512_add_epi64(u_bits, shift));
-  const __m512d dy = _mm512_castsi512_pd(_mm512_add_epi64(dy_bits, shift));
-  const __m512d phi = _mm512_castsi512_pd(phi_bits);
-
-  // product_factors(): a subnormal phi as (phi 2^64) (dy 2^-64)
-  const __mmask8 subnormal_phi = _mm512_cmplt_epu64_mask(_mm512_sub_epi64(phi_bits, one_bit),
-                                                         _mm512_sub_epi64(least_normal, one_bit));
-  const __m512d phi_up = _mm512_mul_pd(_mm512_cvtepi64_pd(phi_bits),
-                                       _mm512_set1_pd(std::numeric_limits<double>::denorm_min() * 0x1p64));
-  const __m512d phi_factor = _mm512_mask_blend_pd(subnormal_phi, phi, phi_up);
-  // dy 2^-64 as a product, not lane()'s quotient dy / 2^64: the same exact value, rounded once
-  // either way, without a second division
-  const __m512d dy_factor = _mm512_mask_blend_pd(subnormal_phi, dy, _mm512_mul_pd(dy, _mm512_set1_pd(0x1p-64)));
-
-  const eight_terms terms = first_terms(u, dy, phi_factor, dy_factor);
-  const eight_decision decision = decide_eight(u, dy, phi_factor, dy_factor, terms, fits);
-  const eight_answers answers = answer_eight(u, dy, phi, phi_factor, dy_factor, subnormal_phi, terms, decision);
-  const __m512d s = answers.s;
-
-  // scaled_back(): s moves back where it is 0, or normal before and after
-  const __m512i s_bits = _mm512_castpd_si512(s);
-  const __m512i abs_s = _mm512_andnot_si512(sign_bits, s_bits);
-  const __mmask8 s_zero = _mm512_cmpeq_epi64_mask(abs_s, _mm512_setzero_si512());
-  const __mmask8 s_back_normal = (is_normal_above_least_binade(abs_s) & is_normal(_mm512_sub_epi64(abs_s, shift))) | s_zero;
-  const __m512d s_back = _mm512_castsi512_pd(_mm512_mask_sub_epi64(s_bits, __mmask8(~s_zero), s_bits, shift));
-
-  return {s_back, answers.which, __mmask8(fits & s_back_normal)};
+  __m512d s = _mm512_scalef_pd(answers.s, _mm512_xor_pd(l.shift, sign_bit));
+  s = _mm512_mask_max_pd(s, answers.is_impact, s, minus_u);
+  s = _mm512_mask_min_pd(s, answers.is_impact, s,
+                         _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(_mm512_or_pd(dy, sign_bit)), one_bit)));
+  s = _mm512_mask_min_pd(s, answers.is_contact, s, dy);
+  s = _mm512_mask_max_pd(s, answers.is_release, s, _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(dy), one_bit)));
+  s = _mm512_mask_mov_pd(s, l.free_flight, minus_u);
+  const __m256i which = _mm256_mask_mov_epi32(answers.which, l.free_flight, _mm256_set1_epi32(int(contact_case::free)));
+  const __mmask8 answered = (l.answerable & (s_zero | (normal_before & below_top))) | l.free_flight;
+  return {s, which, answered};
 }
 
-// The lanes outside the window that solve_lanes_avx512 leaves, for the
-// rescaled pass: a vector with every lane outside by its first lane, solved in
-// place; the lanes of a vector that mixes them with lanes inside (most vectors
-// of the boundaries and phi scenes), packed with their indices, so that the
-// lanes inside keep the first pass's answers and the rescaled pass runs on
-// full vectors of lanes outside (measured on the boundaries scene: 7.3 -> 4.4
-// ns per lane against a rescaled pass on every vector that holds one, phi
-// scene 6.3 -> 5.4, physical and extreme unchanged). The passes over a batch
-// of them run one after the other: they are independent, and out-of-order
-// execution overlaps one's square root and division with the next one's.
-struct pending_lanes {
+CONTACT_BATCH_INLINE eight_answers solve_operands(const eight_operands& l) {
+  const eight_decision decision = decide_eight(l.u, l.dy, l.phi_factor, l.dy_factor, l.terms, l.answerable);
+  return answer_eight(l.u, l.dy, l.phi, l.phi_factor, l.dy_factor, l.phi_moved, l.terms, decision);
+}
+
+// Eight lanes outside the window, moved, solved and moved back: the kernel's
+// path for vectors with such lanes, not pipelined (for tests).
+CONTACT_BATCH_INLINE eight_results rescaled_eight(__m512d u, __m512d dy, __m512d phi) {
+  eight_operands l = moved_operands(u, dy, phi, 0);
+  l.terms = first_terms(l.u, l.dy, l.phi_factor, l.dy_factor);
+  return moved_back_eight(l, solve_operands(l), u, dy);
+}
+
+// detail::scaled<double> on eight lanes, for the lanes no band holds (u and
+// dy too far apart): the significand in [0.5, 1) (or a signed zero, with
+// exponent 0) and the exponent, an integer held as a double. Each operation
+// is scaled<T>'s own, on the same significands, so it rounds the same.
+struct scaled_eight {
+  __m512d significand, exponent;
+};
+
+// scaled<T>::normalized: a finite x 2^exponent with x normal or zero.
+CONTACT_BATCH_INLINE scaled_eight normalized_eight(__m512d x, __m512d exponent) {
+  const __mmask8 nonzero = _mm512_cmp_pd_mask(x, _mm512_setzero_pd(), _CMP_NEQ_UQ);
+  return {_mm512_mask_getmant_pd(x, nonzero, x, _MM_MANT_NORM_p5_1, _MM_MANT_SIGN_src),
+          _mm512_maskz_add_pd(nonzero, exponent, _mm512_add_pd(_mm512_getexp_pd(x), _mm512_set1_pd(1.0)))};
+}
+
+// A double, subnormal or not (as_normal_eight), as a scaled number.
+CONTACT_BATCH_INLINE scaled_eight scaled_of_eight(__m512d x) {
+  __m512d offset;
+  const __m512d normal = as_normal_eight(x, offset);
+  return normalized_eight(normal, offset);
+}
+
+CONTACT_BATCH_INLINE scaled_eight operator*(const scaled_eight& a, const scaled_eight& b) {
+  return normalized_eight(_mm512_mul_pd(a.significand, b.significand), _mm512_add_pd(a.exponent, b.exponent));
+}
+
+CONTACT_BATCH_INLINE scaled_eight operator/(const scaled_eight& a, const scaled_eight& b) {
+  return normalized_eight(_mm512_div_pd(a.significand, b.significand), _mm512_sub_pd(a.exponent, b.exponent));
+}
+
+CONTACT_BATCH_INLINE scaled_eight operator-(const scaled_eight& a) {
+  return {_mm512_xor_pd(a.significand, _mm512_set1_pd(-0.0)), a.exponent};
+}
+
+// times 2^k, exactly, for a constant k (scaled<T>'s product by 2^k's scaled form)
+CONTACT_BATCH_INLINE scaled_eight times_power_of_two(const scaled_eight& a, double k) {
+  const __mmask8 nonzero = _mm512_cmp_pd_mask(a.significand, _mm512_setzero_pd(), _CMP_NEQ_UQ);
+  return {a.significand, _mm512_mask_add_pd(a.exponent, nonzero, a.exponent, _mm512_set1_pd(k))};
+}
+
+// scaled<T>::shifted(x, shift) for a significand x and shift <= 0, as its sum
+// or fma with another significand sees it: exact while normal (shift >= -1000),
+// else a stand-in of its sign, 2^-1010, or 0 where shifted rounds to 0
+// (shift <= -1075, or -1074 with |x| = 1/2). Below 2^-1000 the value cannot
+// change a sum's rounding (below a quarter ulp of the other significand) nor
+// an fma's (the exact product, a multiple of 2^-106, lies at least 2^-106
+// from a rounding boundary unless on one, where only the sign tells), and
+// the stand-in, normal, costs no microcode assist where a subnormal would.
+CONTACT_BATCH_INLINE __m512d shifted_down_eight(__m512d x, __m512d shift) {
+  const __mmask8 exact = _mm512_cmp_pd_mask(shift, _mm512_set1_pd(-1000.0), _CMP_GE_OQ);
+  const __m512d sign_bit = _mm512_set1_pd(-0.0), abs_x = _mm512_andnot_pd(sign_bit, x);
+  const __mmask8 rounds_to_zero =
+      _mm512_cmp_pd_mask(shift, _mm512_set1_pd(-1075.0), _CMP_LE_OQ) |
+      (_mm512_cmp_pd_mask(shift, _mm512_set1_pd(-1074.0), _CMP_EQ_OQ) &
+       _mm512_cmp_pd_mask(abs_x, _mm512_set1_pd(0.5), _CMP_EQ_OQ)) |
+      _mm512_cmp_pd_mask(x, _mm512_setzero_pd(), _CMP_EQ_OQ);
+  const __m512d stand_in = _mm512_or_pd(_mm512_and_pd(x, sign_bit),
+                                        _mm512_maskz_mov_pd(__mmask8(~rounds_to_zero), _mm512_set1_pd(0x1p-1010)));
+  // (the shift clamped where the stand-in is taken, so that no lane's scalef underflows)
+  return _mm512_mask_blend_pd(exact, stand_in, _mm512_scalef_pd(x, _mm512_max_pd(shift, _mm512_set1_pd(-1000.0))));
+}
+
+// scaled<T>'s operator+: a zero term gives the other one; the smaller moves
+// into the larger's frame
+CONTACT_BATCH_INLINE scaled_eight operator+(const scaled_eight& a, const scaled_eight& b) {
+  const __mmask8 a_larger = _mm512_cmp_pd_mask(a.exponent, b.exponent, _CMP_GE_OQ);
+  const __m512d large_exponent = _mm512_mask_blend_pd(a_larger, b.exponent, a.exponent);
+  const __m512d large = _mm512_mask_blend_pd(a_larger, b.significand, a.significand);
+  const __m512d small = _mm512_mask_blend_pd(a_larger, a.significand, b.significand);
+  const __m512d small_exponent = _mm512_mask_blend_pd(a_larger, a.exponent, b.exponent);
+  scaled_eight sum =
+      normalized_eight(_mm512_add_pd(large, shifted_down_eight(small, _mm512_sub_pd(small_exponent, large_exponent))),
+                       large_exponent);
+  const __m512d zero = _mm512_setzero_pd();
+  const __mmask8 a_zero = _mm512_cmp_pd_mask(a.significand, zero, _CMP_EQ_OQ);
+  const __mmask8 b_zero = _mm512_cmp_pd_mask(b.significand, zero, _CMP_EQ_OQ);
+  sum.significand = _mm512_mask_mov_pd(_mm512_mask_mov_pd(sum.significand, a_zero, b.significand), b_zero, a.significand);
+  sum.exponent = _mm512_mask_mov_pd(_mm512_mask_mov_pd(sum.exponent, a_zero, b.exponent), b_zero, a.exponent);
+  return sum;
+}
+
+// scaled<T>'s fused_multiply_add: a * b + c rounded once, the smaller of the
+// product and c moved into the other's frame
+CONTACT_BATCH_INLINE scaled_eight fused_multiply_add(const scaled_eight& a, const scaled_eight& b, const scaled_eight& c) {
+  const __m512d zero = _mm512_setzero_pd();
+  const __m512d product_exponent = _mm512_add_pd(a.exponent, b.exponent);
+  const __mmask8 c_zero = _mm512_cmp_pd_mask(c.significand, zero, _CMP_EQ_OQ);
+  const __mmask8 product_larger = c_zero | _mm512_cmp_pd_mask(product_exponent, c.exponent, _CMP_GE_OQ);
+  // the smaller moves: c by c.e - pe <= 0 where the product is larger (c = 0
+  // may give a shift > 0, which scalef takes: 0 2^k = 0), else b by pe - c.e < 0
+  const __m512d shift = _mm512_sub_pd(c.exponent, product_exponent);
+  const __m512d moved = shifted_down_eight(_mm512_mask_blend_pd(product_larger, b.significand, c.significand),
+                                           _mm512_mask_xor_pd(shift, __mmask8(~product_larger), shift, _mm512_set1_pd(-0.0)));
+  const __m512d addend = _mm512_mask_blend_pd(product_larger, c.significand, moved);
+  const __m512d factor = _mm512_mask_blend_pd(product_larger, moved, b.significand);
+  scaled_eight r = normalized_eight(_mm512_fmadd_pd(a.significand, factor, addend),
+                                    _mm512_mask_blend_pd(product_larger, c.exponent, product_exponent));
+  const __mmask8 product_zero =
+      _mm512_cmp_pd_mask(a.significand, zero, _CMP_EQ_OQ) | _mm512_cmp_pd_mask(b.significand, zero, _CMP_EQ_OQ);
+  r.significand = _mm512_mask_mov_pd(r.significand, product_zero, c.significand);
+  r.exponent = _mm512_mask_mov_pd(r.exponent, product_zero, c.exponent);
+  return r;
+}
+
+// scaled<T>'s square_root: an even exponent halves exactly
+CONTACT_BATCH_INLINE scaled_eight square_root(const scaled_eight& a) {
+  const __m512d half_exponent = _mm512_mul_pd(a.exponent, _mm512_set1_pd(0.5));
+  const __mmask8 odd = _mm512_cmp_pd_mask(half_exponent, _mm512_roundscale_pd(half_exponent, _MM_FROUND_TO_NEG_INF),
+                                          _CMP_NEQ_UQ);
+  const __mmask8 positive = _mm512_cmp_pd_mask(a.significand, _mm512_setzero_pd(), _CMP_GT_OQ);
+  const __m512d m = _mm512_mask_mul_pd(a.significand, odd & positive, a.significand, _mm512_set1_pd(0.5));
+  const __m512d exponent = _mm512_maskz_mov_pd(
+      positive, _mm512_mask_add_pd(half_exponent, odd, half_exponent, _mm512_set1_pd(0.5)));
+  return normalized_eight(_mm512_sqrt_pd(m), exponent);
+}
+
+// scaled<T>::value(): one rounding, into the subnormals or to infinity
+CONTACT_BATCH_INLINE __m512d value_of(const scaled_eight& a) {
+  return times_power_of_two_rounded(a.significand, _mm512_set1_pd(-1.0), a.exponent);
+}
+
+// scaled<T>'s two_sum: the rounded sum and its error; a term more than p + 1
+// binades below the other is the error itself
+CONTACT_BATCH_INLINE detail::exact_pair<scaled_eight> two_sum(const scaled_eight& a, const scaled_eight& b) {
+  const __m512d zero = _mm512_setzero_pd();
+  const __mmask8 a_larger = _mm512_cmp_pd_mask(a.exponent, b.exponent, _CMP_GE_OQ);
+  const scaled_eight large = {_mm512_mask_blend_pd(a_larger, b.significand, a.significand),
+                              _mm512_mask_blend_pd(a_larger, b.exponent, a.exponent)};
+  const scaled_eight small = {_mm512_mask_blend_pd(a_larger, a.significand, b.significand),
+                              _mm512_mask_blend_pd(a_larger, a.exponent, b.exponent)};
+  const __m512d gap = _mm512_sub_pd(large.exponent, small.exponent);
+  const __mmask8 near = _mm512_cmp_pd_mask(gap, _mm512_set1_pd(std::numeric_limits<double>::digits + 1), _CMP_LE_OQ);
+  const __m512d moved = _mm512_maskz_mov_pd(
+      near, _mm512_scalef_pd(small.significand, _mm512_xor_pd(_mm512_min_pd(gap, _mm512_set1_pd(64.0)), _mm512_set1_pd(-0.0))));
+  const auto pair = detail::two_sum(large.significand, moved);
+  detail::exact_pair<scaled_eight> r = {normalized_eight(pair.high, large.exponent),
+                                        normalized_eight(pair.low, large.exponent)};
+  r.high = {_mm512_mask_blend_pd(near, large.significand, r.high.significand),
+            _mm512_mask_blend_pd(near, large.exponent, r.high.exponent)};
+  r.low = {_mm512_mask_blend_pd(near, small.significand, r.low.significand),
+           _mm512_mask_blend_pd(near, small.exponent, r.low.exponent)};
+  const __mmask8 a_zero = _mm512_cmp_pd_mask(a.significand, zero, _CMP_EQ_OQ);
+  const __mmask8 b_zero = _mm512_cmp_pd_mask(b.significand, zero, _CMP_EQ_OQ);
+  const scaled_eight sum = a + b;
+  r.high = {_mm512_mask_mov_pd(r.high.significand, a_zero | b_zero, sum.significand),
+            _mm512_mask_mov_pd(r.high.exponent, a_zero | b_zero, sum.exponent)};
+  r.low = {_mm512_maskz_mov_pd(__mmask8(~(a_zero | b_zero)), r.low.significand),
+           _mm512_maskz_mov_pd(__mmask8(~(a_zero | b_zero)), r.low.exponent)};
+  return r;
+}
+
+// solve_cases<false> on eight lanes whose u, dy, phi are finite and
+// non-zero, phi > 0 (free flight is answered before): the scaled path's
+// formulas and clamps, for the impacts (dy < 0) or, without `impact_side`,
+// for contact and release (dy > 0) with the scaled path's decision where one
+// term's binade outweighs the others (sign_of_dominant_binade). One side at a
+// time, as each formula costs some 300 instructions here. Leaves to the
+// scalar path the other side's lanes, a lane the binades leave undecided, and
+// a release root that rounds to infinity from within an ulp of the largest
+// double (release_root_rounds_to_infinity decides those).
+template <bool impact_side>
+CONTACT_BATCH_INLINE eight_results far_eight(__m512d u_in, __m512d dy_in, __m512d phi_in) {
+  const scaled_eight u = scaled_of_eight(u_in), dy = scaled_of_eight(dy_in), phi = scaled_of_eight(phi_in);
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0),
+                sign_bit = _mm512_set1_pd(-0.0);
+  const __m512i one_bit = _mm512_set1_epi64(1);
+  constexpr int not_finite_or_zero = 0x01 | 0x02 | 0x04 | 0x08 | 0x10 | 0x80;
+  const __mmask8 eligible = __mmask8(~(_mm512_fpclass_pd_mask(u_in, not_finite_or_zero) |
+                                       _mm512_fpclass_pd_mask(dy_in, not_finite_or_zero) |
+                                       _mm512_fpclass_pd_mask(phi_in, not_finite_or_zero))) &
+                            _mm512_cmp_pd_mask(phi_in, zero, _CMP_GT_OQ);
+  const scaled_eight unit = {_mm512_set1_pd(0.5), one};  // scaled 1
+
+  if constexpr (impact_side) {
+    // stable_form::impact_with_square_root, gap = -dy: -N / D, N and D carried as exact pairs
+    const __mmask8 impact =
+        _mm512_cmp_pd_mask(dy_in, zero, _CMP_LT_OQ) & _mm512_cmp_pd_mask(u_in, _mm512_xor_pd(dy_in, sign_bit), _CMP_GT_OQ);
+    const scaled_eight gap = -dy;
+    const scaled_eight push = phi * gap;
+    const scaled_eight push_error = fused_multiply_add(phi, gap, -push);
+    const scaled_eight root = square_root(fused_multiply_add(u, u, times_power_of_two(push * (u + (-gap)), 2)));
+    const auto head = two_sum(u, times_power_of_two(push, 1));
+    const auto numerator = two_sum(head.high, root);
+    const scaled_eight numerator_low = numerator.low + (head.low + times_power_of_two(push_error, 1));
+    const auto one_plus_phi = two_sum(unit, phi);
+    const scaled_eight denominator = times_power_of_two(one_plus_phi.high, 1);
+    const scaled_eight inverse = unit / denominator;
+    const scaled_eight quotient = numerator.high * inverse;
+    const scaled_eight residual = fused_multiply_add(-quotient, denominator, numerator.high);
+    const scaled_eight correction =
+        fused_multiply_add(-quotient, one_plus_phi.low + one_plus_phi.low, residual + numerator_low);
+    __m512d s = _mm512_xor_pd(value_of(fused_multiply_add(correction, inverse, quotient)), sign_bit);
+    s = _mm512_max_pd(s, _mm512_xor_pd(u_in, sign_bit));  // impact_clamped
+    s = _mm512_min_pd(s, _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(_mm512_or_pd(dy_in, sign_bit)), one_bit)));
+    return {s, _mm256_set1_epi32(int(contact_case::impact)), __mmask8(eligible & impact)};
+  } else {
+    const __mmask8 contact_before = _mm512_cmp_pd_mask(dy_in, zero, _CMP_GT_OQ);
+    // sign_of_dominant_binade: binade b = exponent - 1; |phi dy| in [2^(bp + bd), 2^(bp + bd + 2))
+    const __m512d u_least = _mm512_sub_pd(u.exponent, one), dy_least = _mm512_sub_pd(dy.exponent, one);
+    const __m512d product_least = _mm512_add_pd(_mm512_sub_pd(phi.exponent, one), dy_least);
+    const __m512d u_bound = _mm512_add_pd(u_least, one), dy_bound = _mm512_add_pd(dy_least, one);
+    const __m512d product_bound = _mm512_add_pd(product_least, two);
+    const __mmask8 u_dominates = _mm512_cmp_pd_mask(u_least, _mm512_max_pd(dy_bound, product_bound), _CMP_GT_OQ);
+    const __mmask8 dy_dominates = _mm512_cmp_pd_mask(dy_least, _mm512_max_pd(u_bound, product_bound), _CMP_GT_OQ);
+    const __mmask8 product_dominates = _mm512_cmp_pd_mask(product_least, _mm512_max_pd(u_bound, dy_bound), _CMP_GT_OQ);
+    const __mmask8 u_positive = _mm512_cmp_pd_mask(u_in, zero, _CMP_GT_OQ);
+    const __mmask8 stays = (u_dominates & u_positive) | dy_dominates;
+    const __mmask8 decided = u_dominates | dy_dominates | product_dominates;
+
+    // stable_form::contact: (2 phi dy - u) / (1 + phi)
+    const scaled_eight contact = fused_multiply_add(phi, times_power_of_two(dy, 1), -u) / (unit + phi);
+    const __m512d contact_s = _mm512_min_pd(value_of(contact), dy_in);
+
+    // stable_form::release: 2 phi dy^2 / (u + root) for u > 0, else (root - u) / 2;
+    // both sums are root + |u| (scaled sums commute), so one sum and one quotient
+    const scaled_eight stiffness_term = (phi * dy) * dy;
+    const scaled_eight root = square_root(fused_multiply_add(u, u, times_power_of_two(stiffness_term, 2)));
+    const scaled_eight sum = root + scaled_eight{_mm512_andnot_pd(sign_bit, u.significand), u.exponent};
+    const scaled_eight twice_stiffness = times_power_of_two(stiffness_term, 1);
+    const scaled_eight numerator = {_mm512_mask_blend_pd(u_positive, sum.significand, twice_stiffness.significand),
+                                    _mm512_mask_blend_pd(u_positive, sum.exponent, twice_stiffness.exponent)};
+    const scaled_eight denominator = {_mm512_mask_blend_pd(u_positive, _mm512_set1_pd(0.5), sum.significand),
+                                      _mm512_mask_blend_pd(u_positive, two, sum.exponent)};  // scaled 2, or the sum
+    const scaled_eight release = numerator / denominator;
+    const __m512d above_dy = _mm512_castsi512_pd(_mm512_add_epi64(_mm512_castpd_si512(dy_in), one_bit));
+    const __m512d release_s = _mm512_max_pd(value_of(release), above_dy);
+    // an infinite s from a root below 2^(max_exponent + 1): only the exact test tells it from the largest double
+    const __mmask8 near_infinity =
+        _mm512_fpclass_pd_mask(release_s, 0x08) &
+        _mm512_cmp_pd_mask(release.exponent, _mm512_set1_pd(std::numeric_limits<double>::max_exponent + 1), _CMP_LE_OQ);
+
+    const __m256i which = _mm256_mask_blend_epi32(stays, _mm256_set1_epi32(int(contact_case::release)),
+                                                  _mm256_set1_epi32(int(contact_case::contact)));
+    return {_mm512_mask_blend_pd(stays, release_s, contact_s), which,
+            __mmask8(eligible & contact_before & decided & ~(near_infinity & ~stays))};
+  }
+}
+
+// The lanes the vectors leave, by index, solved out of line a batch at a
+// time (solve_left_lanes).
+struct left_lanes {
   static constexpr int capacity = 256;
-  // the packed lanes' inputs (bits) and indices, each with room for a whole vector written past the count
-  alignas(64) std::int64_t u[capacity + 8], dy[capacity + 8], phi[capacity + 8], index[capacity + 8];
+  alignas(64) std::int64_t index[capacity + 8];  // room for a whole vector written past the count
   int count = 0;
-  static constexpr int vector_capacity = 32;
-  std::ptrdiff_t vector_start[vector_capacity];
-  int vector_count = 0;
-  CONTACT_BATCH_INLINE void add(__mmask8 lanes, __m512i u_bits, __m512i dy_bits, __m512i phi_bits, __m512i indices) {
-    _mm512_storeu_si512(u + count, _mm512_maskz_compress_epi64(lanes, u_bits));
-    _mm512_storeu_si512(dy + count, _mm512_maskz_compress_epi64(lanes, dy_bits));
-    _mm512_storeu_si512(phi + count, _mm512_maskz_compress_epi64(lanes, phi_bits));
+  CONTACT_BATCH_INLINE void add(__mmask8 lanes, __m512i indices) {
     _mm512_storeu_si512(index + count, _mm512_maskz_compress_epi64(lanes, indices));
     count += std::popcount(unsigned(lanes));
   }
 };
 
-// rescaled_eight on the pending lanes, eight at a time, each answer written
-// back to its lane; the scalar path for the lanes it cannot answer.
-[[gnu::noinline]] inline void solve_pending(const double* __restrict u, const double* __restrict dy,
-                                            const double* __restrict phi, double* __restrict s, int* __restrict which,
-                                            const pending_lanes& lanes) {
-  for (int v = 0; v < lanes.vector_count; ++v) {
-    const std::ptrdiff_t i = lanes.vector_start[v];
-    const rescaled_answers r =
-        rescaled_eight(_mm512_loadu_si512(u + i), _mm512_loadu_si512(dy + i), _mm512_loadu_si512(phi + i));
-    _mm512_storeu_pd(s + i, r.s);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which + i), r.which);
-    for (unsigned left = ~unsigned(r.answered) & 0xFFu; left != 0; left &= left - 1)
-      solve_scalar_lane(u, dy, phi, s, which, i + std::countr_zero(left));
-  }
-  const __m512i one_bits = _mm512_castpd_si512(_mm512_set1_pd(1.0));  // for the lanes past the count
+// Eight at a time, gathered, by far_eight of their side (most of them: u and
+// dy too far apart for any band), and the scalar path for what that cannot
+// answer.
+template <bool impact_side>
+[[gnu::noinline]] void solve_left_lanes(const double* __restrict u, const double* __restrict dy,
+                                               const double* __restrict phi, double* __restrict s,
+                                               int* __restrict which, left_lanes& lanes) {
+  const __m512d one = _mm512_set1_pd(1.0);
   for (int k = 0; k < lanes.count; k += 8) {
-    const int active = std::min(8, lanes.count - k);
-    const __mmask8 filled = __mmask8((1u << active) - 1);
-    const rescaled_answers r = rescaled_eight(_mm512_mask_load_epi64(one_bits, filled, lanes.u + k),
-                                              _mm512_mask_load_epi64(one_bits, filled, lanes.dy + k),
-                                              _mm512_mask_load_epi64(one_bits, filled, lanes.phi + k));
-    alignas(64) double answer_s[8];
-    alignas(32) int answer_which[8];
-    _mm512_store_pd(answer_s, r.s);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(answer_which), r.which);
-    for (int j = 0; j < active; ++j) {  // every lane, without a branch; those not answered are solved again below
-      s[lanes.index[k + j]] = answer_s[j];
-      which[lanes.index[k + j]] = answer_which[j];
-    }
-    for (unsigned left = unsigned(filled & ~r.answered); left != 0; left &= left - 1)
+    const __mmask8 active = lanes.count - k >= 8 ? __mmask8(0xFF) : __mmask8((1u << (lanes.count - k)) - 1);
+    const __m512i index = _mm512_maskz_loadu_epi64(active, lanes.index + k);
+    const eight_results r = far_eight<impact_side>(_mm512_mask_i64gather_pd(one, active, index, u, 8),
+                                      _mm512_mask_i64gather_pd(one, active, index, dy, 8),
+                                      _mm512_mask_i64gather_pd(one, active, index, phi, 8));
+    const __mmask8 answered = active & r.answered;
+    _mm512_mask_i64scatter_pd(s, answered, index, r.s, 8);
+    _mm512_mask_i64scatter_epi32(which, answered, index, r.which, 4);
+    for (unsigned left = active & ~answered; left != 0; left &= left - 1)
       solve_scalar_lane(u, dy, phi, s, which, lanes.index[k + std::countr_zero(left)]);
   }
+  lanes.count = 0;
 }
 
 // The same lanes with AVX-512 written out, for double: the operations of lane()
@@ -657,76 +986,69 @@ struct pending_lanes {
 // - the square root of the next 8 lanes is issued before the division of
 //   these 8 (both run on one unit, and out-of-order execution alone does not
 //   overlap them across iterations): about 0.76 ns.
-// The lanes outside the window are collected by index and solved out of line
-// (solve_pending: rescaled_eight, then the scalar path for what that cannot answer).
+// A vector with a lane outside the window runs moved (moved_operands) in the
+// same loop, pipelined alike, and its lanes that even that cannot answer
+// are noted for solve_left_lanes, out of line.
 inline void solve_lanes_avx512(const double* __restrict u_in, const double* __restrict dy_in, const double* __restrict phi_in,
                       double* __restrict s_out, int* __restrict which_out, std::ptrdiff_t n) {
   const __m512i sign_bits = _mm512_set1_epi64(std::int64_t(sign_mask<double>));
   const __m512i lowest_uv = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest_uv<double>));  // 2^L
   const __m512i lowest_phi = _mm512_set1_epi64(std::int64_t(detail::common_window_lowest_phi<double>));  // 2^M
   const __m512i width = _mm512_set1_epi64(std::int64_t(detail::common_window_width<double>));
-  std::ptrdiff_t i = 0;
-  // 8 lanes up to their square root, which is issued one vector ahead
-  struct up_to_root {
-    __m512d u, dy, phi;
-    __mmask8 inside;
-    eight_terms terms;
-  };
-  auto start = [&](std::ptrdiff_t j) {
-    up_to_root l;
-    const __m512i u_bits = _mm512_loadu_si512(u_in + j), dy_bits = _mm512_loadu_si512(dy_in + j);
-    const __m512i phi_bits = _mm512_loadu_si512(phi_in + j);
-    // inside_window()'s test: the OR of the three offsets from 2^-E (a negative
-    // or NaN phi fails it)
-    const __m512i spread = _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_andnot_si512(sign_bits, u_bits), lowest_uv),
-                                                     _mm512_sub_epi64(_mm512_andnot_si512(sign_bits, dy_bits), lowest_uv),
-                                                     _mm512_sub_epi64(phi_bits, lowest_phi), 0xFE);
-    l.inside = _mm512_cmplt_epu64_mask(spread, width);
-    // The lanes outside are answered again later, rescaled; here they take 1
-    // for u, dy and phi (masked loads: no extra arithmetic), so that none of
-    // their products under- or overflows. A subnormal operand or result costs
-    // a microcode assist on many cores, about as much as the rest of the 8
-    // lanes together: measured 11.8 -> 5.8 ns per lane where u and dy span
-    // 2^+-1000, no change on physical inputs.
-    const __m512d one = _mm512_set1_pd(1.0);
-    l.u = _mm512_mask_loadu_pd(one, l.inside, u_in + j);
-    l.dy = _mm512_mask_loadu_pd(one, l.inside, dy_in + j);
-    l.phi = _mm512_mask_loadu_pd(one, l.inside, phi_in + j);
-    l.terms = first_terms(l.u, l.dy, l.phi, l.dy);
+  auto start = [&](std::ptrdiff_t j) __attribute__((always_inline)) {
+    const __m512d u = _mm512_loadu_pd(u_in + j), dy = _mm512_loadu_pd(dy_in + j), phi = _mm512_loadu_pd(phi_in + j);
+    // inside_window()'s test: the OR of the three offsets from the window's
+    // lower ends (a negative or NaN phi fails it)
+    const __m512i spread =
+        _mm512_ternarylogic_epi64(_mm512_sub_epi64(_mm512_andnot_si512(sign_bits, _mm512_castpd_si512(u)), lowest_uv),
+                                  _mm512_sub_epi64(_mm512_andnot_si512(sign_bits, _mm512_castpd_si512(dy)), lowest_uv),
+                                  _mm512_sub_epi64(_mm512_castpd_si512(phi), lowest_phi), 0xFE);
+    const __mmask8 inside = _mm512_cmplt_epu64_mask(spread, width);
+    eight_operands l;
+    if (inside == 0xFF) [[likely]] {
+      l.u = u;
+      l.dy = l.dy_factor = dy;
+      l.phi = l.phi_factor = phi;
+      l.shift = _mm512_setzero_pd();
+      l.phi_moved = 0;
+      l.answerable = 0xFF;
+      l.free_flight = 0;  // (the plain answers hold it)
+      l.moved = false;
+    } else {
+      l = moved_operands(u, dy, phi, inside);
+    }
+    l.terms = first_terms(l.u, l.dy, l.phi_factor, l.dy_factor);
     return l;
   };
-  up_to_root next{};
+  std::ptrdiff_t i = 0;
+  eight_operands next{};
   if (n >= 8) next = start(0);
-  pending_lanes pending;
+  left_lanes left_impacts, left_others;  // dy < 0, and the rest
   const __m512i lane_numbers = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
   for (; i + 8 <= n; i += 8) {
-    const up_to_root l = next;
-    if (i + 16 <= n) next = start(i + 8);
-    const __m512d u = l.u, dy = l.dy, phi = l.phi;
-    // every lane inside is decided, by the pre-test or exactly
-    const eight_decision decision = decide_eight(u, dy, phi, dy, l.terms, l.inside);
-    const eight_answers answers = answer_eight(u, dy, phi, phi, dy, __mmask8(0), l.terms, decision);
-    _mm512_storeu_pd(s_out + i, answers.s);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i), answers.which);
-    // the lanes outside, noted for solve_pending, out of line, so that the hot
-    // loop stays short (the branches are never taken on physical inputs, and
-    // nearly always on the wide scenes, where most vectors hold such a lane)
-    const __mmask8 outside = __mmask8(~l.inside);
-    if (outside != 0) {
-      if (outside == 0xFF)
-        pending.vector_start[pending.vector_count++] = i;
-      else
-        pending.add(outside, _mm512_loadu_si512(u_in + i), _mm512_loadu_si512(dy_in + i),
-                    _mm512_loadu_si512(phi_in + i), _mm512_add_epi64(_mm512_set1_epi64(i), lane_numbers));
-      if (pending.count > pending_lanes::capacity - 8 || pending.vector_count == pending_lanes::vector_capacity)
-          [[unlikely]] {
-        solve_pending(u_in, dy_in, phi_in, s_out, which_out, pending);
-        pending.count = 0;
-        pending.vector_count = 0;
-      }
+    const eight_operands l = next;
+    if (i + 16 <= n) next = start(i + 8);  // its square root issued before this division
+    const eight_answers answers = solve_operands(l);
+    if (!l.moved) [[likely]] {
+      _mm512_storeu_pd(s_out + i, answers.s);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i), answers.which);
+      continue;
     }
+    const eight_results r = moved_back_eight(l, answers, _mm512_loadu_pd(u_in + i), _mm512_loadu_pd(dy_in + i));
+    _mm512_storeu_pd(s_out + i, r.s);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which_out + i), r.which);
+    // without a branch on whether there are any: on the wide scenes that is a coin toss
+    const __m512i indices = _mm512_add_epi64(_mm512_set1_epi64(i), lane_numbers);
+    const __mmask8 impact_side = _mm512_cmp_pd_mask(_mm512_loadu_pd(dy_in + i), _mm512_setzero_pd(), _CMP_LT_OQ);
+    left_impacts.add(__mmask8(~r.answered & impact_side), indices);
+    left_others.add(__mmask8(~r.answered & ~impact_side), indices);
+    if (left_impacts.count > left_lanes::capacity - 8)
+      solve_left_lanes<true>(u_in, dy_in, phi_in, s_out, which_out, left_impacts);
+    if (left_others.count > left_lanes::capacity - 8)
+      solve_left_lanes<false>(u_in, dy_in, phi_in, s_out, which_out, left_others);
   }
-  if (pending.count != 0 || pending.vector_count != 0) solve_pending(u_in, dy_in, phi_in, s_out, which_out, pending);
+  if (left_impacts.count != 0) solve_left_lanes<true>(u_in, dy_in, phi_in, s_out, which_out, left_impacts);
+  if (left_others.count != 0) solve_left_lanes<false>(u_in, dy_in, phi_in, s_out, which_out, left_others);
   for (; i < n; ++i) solve_scalar_lane(u_in, dy_in, phi_in, s_out, which_out, i);  // the last n mod 8 lanes
 }
 #endif
