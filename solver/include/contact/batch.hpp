@@ -8,17 +8,21 @@
 // order and with the same fma as stable.hpp, and selects its own result with
 // masks, so the compiler vectorises the loop. A block with lanes outside that
 // window runs again rescaled (with AVX-512, a vector of 8 lanes with such a
-// lane runs rescaled instead of plain): u and dy move by one power of two to where phi's band leaves them room and s
-// moves back, exactly (the homogeneity and the bands that solve_stable uses
-// outside its plain window). The lanes that even that cannot answer are
-// solved by the scalar contact::solve_stable: phi in no band (phi >= 2^1021
-// in double, 2^125 in float; phi = 0; NaN, infinity, phi < 0), u and dy too
-// far apart for the band, and a zero u or dy. The portable kernel also leaves
-// to it subnormal u or dy, subnormal phi in float, an impact using its own
-// room, free flight outside the bands, and an s that is subnormal or
-// overflows once moved back; the AVX-512 kernel (double) answers those as
-// solve_stable does, but for an s in the least normal binade or below before
-// the move back, or in the binade 2^1024 after it.
+// lane runs rescaled instead of plain): u and dy move by one power of two to
+// where phi's band leaves them room and s moves back, exactly (the
+// homogeneity and the bands that solve_stable uses outside its plain window).
+// The portable kernel solves the lanes that even that cannot answer by the
+// scalar contact::solve_stable: phi in no band (phi >= 2^1021 in double,
+// 2^125 in float; phi = 0; NaN, infinity, phi < 0), u and dy too far apart
+// for the band, a zero or subnormal u or dy, subnormal phi in float, an
+// impact using its own room, free flight outside the bands, and an s that is
+// subnormal or overflows once moved back. The AVX-512 kernel (double) answers
+// all of those in vector code, the lanes too far apart by scaled<double>'s
+// own operations on eight lanes (far_eight), but for a case the binades
+// cannot decide there, a release root within an ulp of the largest double,
+// an s in the least normal binade or below before the move back or in the
+// binade 2^1024 after it, a zero u or dy, phi = 0 (but for free flight) and
+// invalid input.
 //
 // The exact criterion of (A.21), u + dy - phi dy >= 0, is decided as
 // stable.hpp decides it: its pre-test (detail::estimate_contact, an fma
