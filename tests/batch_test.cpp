@@ -342,31 +342,42 @@ TEST(Batch, LanesNearTheContactBoundaryEqualScalarStableBitForBit) {
 }
 
 #if defined(__AVX512F__)
+// The lanes of eight vector answers (rescaled_eight, far_eight) for in's lanes
+// i to i + 7: bit for bit solve_stable's where `answered` says so, each
+// mismatch a failure (the first 10 listed) added to `mismatches`. Returns the
+// lanes answered, as a mask.
+unsigned check_eight(const contact::batch_detail::eight_results& r, const lanes<double>& in, std::size_t i,
+                     long& mismatches) {
+  alignas(64) double s[8];
+  alignas(32) int which[8];
+  _mm512_store_pd(s, r.s);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(which), r.which);
+  for (int k = 0; k < 8; ++k) {
+    if (!(r.answered >> k & 1)) continue;
+    const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
+    if ((!identical(scalar.s, s[k]) || static_cast<int>(scalar.which) != which[k]) && ++mismatches <= 10)
+      ADD_FAILURE() << std::hexfloat << "u=" << in.u[i + k] << " dy=" << in.dy[i + k] << " phi=" << in.phi[i + k]
+                    << ": vector s=" << s[k] << " case " << which[k] << ", scalar s=" << scalar.s << " case "
+                    << static_cast<int>(scalar.which);
+  }
+  return r.answered;
+}
+
+contact::batch_detail::eight_results rescaled_eight_of(const lanes<double>& in, std::size_t i) {
+  return contact::batch_detail::rescaled_eight(_mm512_loadu_pd(in.u.data() + i), _mm512_loadu_pd(in.dy.data() + i),
+                                               _mm512_loadu_pd(in.phi.data() + i));
+}
+
 // The AVX-512 rescaled pass decides those lanes itself (decide_eight's exact
 // sum), as solve_stable does, instead of leaving them to the scalar path.
 TEST(Batch, RescaledPassDecidesTheLanesNearTheContactBoundaryInVectorCode) {
   const auto in = near_the_contact_boundary(34, 40000);
-  const auto n = static_cast<std::ptrdiff_t>(in.u.size());
-  std::vector<double> s(in.u.size());
-  std::vector<int> which(in.u.size());
   long answered = 0, mismatches = 0;
-  for (std::ptrdiff_t i = 0; i + 8 <= n; i += 8) {
-    const auto answers = contact::batch_detail::rescaled_eight(_mm512_loadu_pd(in.u.data() + i),
-                                                               _mm512_loadu_pd(in.dy.data() + i),
-                                                               _mm512_loadu_pd(in.phi.data() + i));
-    _mm512_storeu_pd(s.data() + i, answers.s);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(which.data() + i), answers.which);
-    for (int k = 0; k < 8; ++k) {
-      if (!(answers.answered >> k & 1)) continue;
-      ++answered;
-      const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
-      mismatches += !identical(scalar.s, s[i + k]) || static_cast<int>(scalar.which) != which[i + k];
-    }
-  }
+  for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8)
+    answered += std::popcount(check_eight(rescaled_eight_of(in, i), in, i, mismatches));
   EXPECT_EQ(mismatches, 0);
-  EXPECT_GT(answered, n * 9 / 10) << "of " << n;
+  EXPECT_GT(answered, long(in.u.size()) * 9 / 10) << "of " << in.u.size();
 }
-#endif
 
 // Lanes that the AVX-512 kernel answers in vector code and the portable
 // kernel leaves to the scalar path, one kind per vector: subnormal u or dy,
@@ -399,39 +410,21 @@ lanes<double> lanes_for_the_avx512_kernel(std::uint64_t seed, int vectors_per_ki
   return in;
 }
 
-#if defined(__AVX512F__)
 TEST(Batch, Avx512KernelAnswersSubnormalOperandsImpactRoomFreeFlightAndOverflowInVectorCode) {
   const auto in = lanes_for_the_avx512_kernel(35, 100);
   constexpr int kinds = 5;
   long answered[kinds] = {}, lanes_of[kinds] = {}, mismatches = 0;
   for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8) {
-    const auto answers = contact::batch_detail::rescaled_eight(_mm512_loadu_pd(in.u.data() + i),
-                                                               _mm512_loadu_pd(in.dy.data() + i),
-                                                               _mm512_loadu_pd(in.phi.data() + i));
-    alignas(64) double s[8];
-    alignas(32) int which[8];
-    _mm512_store_pd(s, answers.s);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(which), answers.which);
     const std::size_t kind = (i / 8) % kinds;
-    for (int k = 0; k < 8; ++k) {
-      ++lanes_of[kind];
-      if (!(answers.answered >> k & 1)) continue;
-      ++answered[kind];
-      const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
-      if (!identical(scalar.s, s[k]) || static_cast<int>(scalar.which) != which[k])
-        if (++mismatches <= 10)
-          ADD_FAILURE() << std::hexfloat << "u=" << in.u[i + k] << " dy=" << in.dy[i + k] << " phi=" << in.phi[i + k]
-                        << ": vector s=" << s[k] << " case " << which[k] << ", scalar s=" << scalar.s;
-    }
+    lanes_of[kind] += 8;
+    answered[kind] += std::popcount(check_eight(rescaled_eight_of(in, i), in, i, mismatches));
   }
   EXPECT_EQ(mismatches, 0);
   const char* names[kinds] = {"subnormal u", "impact room", "free flight", "overflowing release", "subnormal s"};
   for (int kind = 0; kind < kinds; ++kind) EXPECT_GT(answered[kind], lanes_of[kind] * 9 / 10) << names[kind];
   expect_same_as_scalar(in);
 }
-#endif
 
-#if defined(__AVX512F__)
 // u and dy further apart than any band's room (400 to 2000 binades), every
 // case, phi anywhere: the lanes that the AVX-512 kernel solves with
 // detail::scaled<double>'s operations on eight lanes (far_eight) instead of
@@ -447,8 +440,7 @@ TEST(Batch, FarApartLanesTakeTheScaledPathInVectorCode) {
     in.add(sign() * (u_larger ? larger : smaller), sign() * (u_larger ? smaller : larger), power(-1074, 1023));
   }
   long answered = 0, mismatches = 0, not_free = 0;
-  const auto n = static_cast<std::ptrdiff_t>(in.u.size());
-  for (std::ptrdiff_t i = 0; i + 8 <= n; i += 8) {
+  for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8) {
     const __m512d u = _mm512_loadu_pd(in.u.data() + i), dy = _mm512_loadu_pd(in.dy.data() + i),
                   phi = _mm512_loadu_pd(in.phi.data() + i);
     auto r = contact::batch_detail::far_eight<false>(u, dy, phi);
@@ -457,20 +449,9 @@ TEST(Batch, FarApartLanesTakeTheScaledPathInVectorCode) {
     r.s = _mm512_mask_mov_pd(r.s, impacts.answered, impacts.s);
     r.which = _mm256_mask_mov_epi32(r.which, impacts.answered, impacts.which);
     r.answered |= impacts.answered;
-    alignas(64) double s[8];
-    alignas(32) int which[8];
-    _mm512_store_pd(s, r.s);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(which), r.which);
-    for (int k = 0; k < 8; ++k) {
-      const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
-      not_free += scalar.which != contact::contact_case::free;
-      if (!(r.answered >> k & 1)) continue;
-      ++answered;
-      if ((!identical(scalar.s, s[k]) || static_cast<int>(scalar.which) != which[k]) && ++mismatches <= 10)
-        ADD_FAILURE() << std::hexfloat << "u=" << in.u[i + k] << " dy=" << in.dy[i + k] << " phi=" << in.phi[i + k]
-                      << ": vector s=" << s[k] << " case " << which[k] << ", scalar s=" << scalar.s << " case "
-                      << static_cast<int>(scalar.which);
-    }
+    answered += std::popcount(check_eight(r, in, i, mismatches));
+    for (std::size_t k = i; k < i + 8; ++k)
+      not_free += contact::solve_stable(in.u[k], in.dy[k], in.phi[k]).which != contact::contact_case::free;
   }
   EXPECT_EQ(mismatches, 0);
   // free flight (three eighths of them) is answered before, by moved_back_eight; the rest but a few

@@ -519,6 +519,10 @@ CONTACT_BATCH_INLINE eight_answers answer_eight(__m512d u, __m512d dy, __m512d p
           is_release};
 }
 
+// fpclass categories: quiet NaN, +inf, -inf, signalling NaN; and +0, -0
+inline constexpr int fpclass_not_finite = 0x01 | 0x08 | 0x10 | 0x80;
+inline constexpr int fpclass_zero = 0x02 | 0x04;
+
 // A subnormal x as the integer k of its bits (x = k 2^-1074, which converts
 // exactly to a normal double) and offset = -1074; any other x as it is, offset
 // 0. getexp, scalef and getmant on a subnormal operand would each cost a
@@ -534,30 +538,6 @@ CONTACT_BATCH_INLINE __m512d as_normal_eight(__m512d x, __m512d& offset) {
   return _mm512_mask_blend_pd(subnormal, x, integer);
 }
 
-// x 2^k rounded once, as ldexp rounds it, for x normal or zero in binade b
-// (b >= -1074; getexp's, or -1 for a significand) and integer k. A result
-// below the normal range is rounded as the integer of its bits, x 2^(k + 1074)
-// rounded to an integer (roundscale, to nearest even; 2^52 is the least
-// normal's bits), and assembled from them, and the normal route's shift is
-// clamped where it is not taken: no operation underflows, as an underflowing
-// one costs a microcode assist (measured on far-apart lanes, far_eight alone:
-// 19.5 -> 12.2 ns per lane).
-CONTACT_BATCH_INLINE __m512d times_power_of_two_rounded(__m512d x, __m512d binade, __m512d k) {
-  constexpr double least_binade = detail::phi_bands<double>::least_binade;  // -1074
-  constexpr double least_normal_binade = std::numeric_limits<double>::min_exponent - 1;  // -1022
-  const __m512d sign_bit = _mm512_set1_pd(-0.0);
-  const __mmask8 below_normal =
-      _mm512_cmp_pd_mask(_mm512_add_pd(binade, k), _mm512_set1_pd(least_normal_binade), _CMP_LT_OQ);
-  // below 2^-62 (from binade -62 + b down) the integer rounds to 0 all the same
-  const __m512d units = _mm512_scalef_pd(_mm512_andnot_pd(sign_bit, x),
-                                         _mm512_max_pd(_mm512_sub_pd(k, _mm512_set1_pd(least_binade)),
-                                                       _mm512_sub_pd(_mm512_set1_pd(-62.0), binade)));
-  const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
-  const __m512d subnormal = _mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(x, sign_bit));
-  const __m512d normal =
-      _mm512_scalef_pd(x, _mm512_max_pd(k, _mm512_sub_pd(_mm512_set1_pd(least_normal_binade), binade)));
-  return _mm512_mask_blend_pd(below_normal, normal, subnormal);
-}
 
 // phi_bands<double>' table as doubles, for the AVX-512 kernel, which reads the
 // binades of u and dy with getexp (subnormals included) and moves them with
@@ -616,8 +596,8 @@ CONTACT_BATCH_INLINE eight_operands moved_operands(__m512d u, __m512d dy, __m512
   };
   const __mmask8 phi_in_a_band = _mm512_cmplt_epu64_mask(_mm512_sub_epi64(phi_bits, _mm512_set1_epi64(moves::phi_least)),
                                                          _mm512_set1_epi64(moves::phi_end - moves::phi_least));
-  constexpr int not_finite = 0x01 | 0x08 | 0x10 | 0x80;  // fpclass: quiet NaN, +inf, -inf, signalling NaN
-  const __mmask8 finite = __mmask8(~(_mm512_fpclass_pd_mask(u, not_finite) | _mm512_fpclass_pd_mask(dy, not_finite)));
+  const __mmask8 finite =
+      __mmask8(~(_mm512_fpclass_pd_mask(u, fpclass_not_finite) | _mm512_fpclass_pd_mask(dy, fpclass_not_finite)));
   __m512d u_offset, dy_offset;
   const __m512d u_normal = as_normal_eight(u, u_offset), dy_normal = as_normal_eight(dy, dy_offset);
   const __m512d u_binade = _mm512_add_pd(_mm512_getexp_pd(u_normal), u_offset);
@@ -825,9 +805,27 @@ CONTACT_BATCH_INLINE scaled_eight square_root(const scaled_eight& a) {
   return normalized_eight(_mm512_sqrt_pd(m), exponent);
 }
 
-// scaled<T>::value(): one rounding, into the subnormals or to infinity
+// scaled<T>::value(): m 2^e rounded once, into the subnormals or to infinity.
+// A result below the normal range (e <= -1022, m in [0.5, 1)) is rounded as
+// the integer of its bits, m 2^(e + 1074) rounded to an integer (roundscale,
+// to nearest even; 2^52 is the least normal's bits), and assembled from
+// them, and the normal route's shift is clamped where it is not taken: no
+// operation underflows, as an underflowing one costs a microcode assist
+// (measured on far-apart lanes, far_eight alone: 19.5 -> 12.2 ns per lane).
 CONTACT_BATCH_INLINE __m512d value_of(const scaled_eight& a) {
-  return times_power_of_two_rounded(a.significand, _mm512_set1_pd(-1.0), a.exponent);
+  constexpr double least_binade = detail::phi_bands<double>::least_binade;  // -1074
+  constexpr double least_normal_exponent = std::numeric_limits<double>::min_exponent;  // 2^-1022 = 0.5 2^-1021
+  const __m512d sign_bit = _mm512_set1_pd(-0.0);
+  const __mmask8 below_normal = _mm512_cmp_pd_mask(a.exponent, _mm512_set1_pd(least_normal_exponent), _CMP_LT_OQ);
+  // from m 2^-62 down the integer rounds to 0 all the same
+  const __m512d units =
+      _mm512_scalef_pd(_mm512_andnot_pd(sign_bit, a.significand),
+                       _mm512_max_pd(_mm512_sub_pd(a.exponent, _mm512_set1_pd(least_binade)), _mm512_set1_pd(-61.0)));
+  const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+  const __m512d subnormal = _mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(a.significand, sign_bit));
+  const __m512d normal =
+      _mm512_scalef_pd(a.significand, _mm512_max_pd(a.exponent, _mm512_set1_pd(least_normal_exponent)));
+  return _mm512_mask_blend_pd(below_normal, normal, subnormal);
 }
 
 // scaled<T>'s two_sum: the rounded sum and its error; a term more than p + 1
@@ -875,7 +873,7 @@ CONTACT_BATCH_INLINE eight_results far_eight(__m512d u_in, __m512d dy_in, __m512
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0),
                 sign_bit = _mm512_set1_pd(-0.0);
   const __m512i one_bit = _mm512_set1_epi64(1);
-  constexpr int not_finite_or_zero = 0x01 | 0x02 | 0x04 | 0x08 | 0x10 | 0x80;
+  constexpr int not_finite_or_zero = fpclass_not_finite | fpclass_zero;
   const __mmask8 eligible = __mmask8(~(_mm512_fpclass_pd_mask(u_in, not_finite_or_zero) |
                                        _mm512_fpclass_pd_mask(dy_in, not_finite_or_zero) |
                                        _mm512_fpclass_pd_mask(phi_in, not_finite_or_zero))) &
