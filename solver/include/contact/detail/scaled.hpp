@@ -76,6 +76,13 @@ struct scaled {
       constexpr bits field_mask = layout::exponent_field;
       const bits b = std::bit_cast<bits>(x);
       const long field = long((b >> significand_bits) & field_mask);
+      // x and x 2^shift both normal, the common case, first and in one branch
+      // instead of five (unsigned: a field + shift that wraps lands far
+      // outside the normal fields); the tests below then take the rest
+      using unsigned_long = unsigned long;
+      const unsigned_long normal_fields = unsigned_long(field_mask) - 1;  // 1 .. field_mask - 1, less one
+      if ((unsigned_long(field) - 1 < normal_fields) & (unsigned_long(field) + unsigned_long(shift) - 1 < normal_fields))
+        return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
       if (field == long(field_mask) || x == 0) return x;  // infinity, NaN and zero times 2^shift
       if (field == 0)  // (a shift from below -2^31 on gives zero all the same, and no overflow)
         return shifted(subnormal_as_integer(x), std::max(shift, long(INT_MIN)) - least_binade_of_bits);
