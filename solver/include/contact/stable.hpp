@@ -519,7 +519,7 @@ template <class T>
   constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
-  if (u_magnitude == 0 && dy_magnitude == 0) return solve_cases<true>(u, dy, phi);
+  // (u and dy both zero is free flight, answered before)
   const int u_binade = u_magnitude == 0 ? binade_of(dy) : binade_of(u);
   const int dy_binade = dy_magnitude == 0 ? u_binade : binade_of(dy);
   return solve_in_band<false>(u, dy, phi, std::max(u_binade, dy_binade), std::min(u_binade, dy_binade));

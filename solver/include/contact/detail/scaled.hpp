@@ -89,8 +89,7 @@ struct scaled {
       // beyond the whole exponent range either way; no sum below can overflow a long
       if (shift <= -2 * long(field_mask)) return std::copysign(T(0), x);
       if (shift >= 2 * long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
-      const long target = field + shift;  // the exponent field the result would have
-      if (target > 0 && target < long(field_mask)) return std::bit_cast<T>(bits(b + (bits(shift) << significand_bits)));
+      const long target = field + shift;  // the exponent field the result would have (not normal: taken above)
       if (target >= long(field_mask)) return std::copysign(std::numeric_limits<T>::infinity(), x);
       // below 2^(1 - bias - significand_bits) / 2 (ties to the even zero) it rounds to zero
       if (target <= -significand_bits - 1) return std::copysign(T(0), x);
