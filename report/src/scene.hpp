@@ -54,7 +54,11 @@ struct run {
   std::vector<check> checks;
   long samples = -1;         // at most this many samples of each family (-1: all)
   long timing_inputs = 4096;  // length of the input array that the timings loop over
-  int repetitions = 5;
+  // rounds of every method of the run, each timed once per round: the
+  // medians of eleven survive five rounds disturbed by the machine's load
+  // (on the shared 2-core machine a slow phase of seconds, measured to move
+  // the physical scene's stable/textbook from 1.05-1.09 to 1.21 with five)
+  int repetitions = 11;
   double min_time = 0.05;  // seconds per repetition
   long line = 0;
 };
