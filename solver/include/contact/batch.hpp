@@ -530,6 +530,23 @@ inline constexpr int fpclass_zero = 0x02 | 0x04;
 // kernels read subnormals by getmant and getexp, and form subnormal results
 // as integers (value_of, moved_back_eight).
 
+// x 2^k rounded once into the subnormals, or to 0, on the lanes of `lanes`
+// (0 elsewhere), for x normal or zero in binade b (getexp's, or -1 for a
+// significand in [0.5, 1)) and integer k with b + k below the normal
+// binades: the integer of its bits, x 2^(k + 1074) rounded to an integer
+// (roundscale, to nearest even; 2^52 is the least normal's bits), so that no
+// operation has a subnormal result. From 2^-62 of x's binade down the
+// integer is 0 all the same, which bounds the scalef.
+CONTACT_BATCH_INLINE __m512d rounded_below_normal(__mmask8 lanes, __m512d x, __m512d binade, __m512d k) {
+  const __m512d sign_bit = _mm512_set1_pd(-0.0);
+  const __m512d units =
+      _mm512_maskz_scalef_pd(lanes, _mm512_andnot_pd(sign_bit, x),
+                             _mm512_max_pd(_mm512_sub_pd(k, _mm512_set1_pd(detail::phi_bands<double>::least_binade)),
+                                           _mm512_sub_pd(_mm512_set1_pd(-62.0), binade)));
+  const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+  return _mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(x, sign_bit));
+}
+
 
 // phi_bands<double>' table as doubles, for the AVX-512 kernel, which reads the
 // binades of u and dy with getexp (subnormals included) and moves them with
@@ -663,10 +680,9 @@ CONTACT_BATCH_INLINE eight_results moved_back_eight(const eight_operands& l, con
   const __mmask8 s_zero = _mm512_cmp_pd_mask(answers.s, _mm512_setzero_pd(), _CMP_EQ_OQ);
   const __m512d sign_bit = _mm512_set1_pd(-0.0), minus_u = _mm512_xor_pd(u, sign_bit);
   const __m512i one_bit = _mm512_set1_epi64(1);
-  // An s that lands below the normal binades is rounded as the integer of its
-  // bits (x 2^1074, rounded to nearest even by roundscale), as value_of
-  // rounds, since a scalef with a subnormal result costs a microcode assist
-  // (below 2^-1136 it rounds to 0 all the same). On the extreme scene 8% of
+  // An s that lands below the normal binades is rounded by
+  // rounded_below_normal, as value_of rounds, since a scalef with a subnormal
+  // result costs a microcode assist. On the extreme scene 8% of
   // the lanes, in 48% of the vectors, land there: the route taken on those
   // vectors only measured 3.8% faster there than scalef alone, and taken on
   // every vector 2% slower.
@@ -677,13 +693,8 @@ CONTACT_BATCH_INLINE eight_results moved_back_eight(const eight_operands& l, con
   if (below_normal == 0) [[likely]] {
     s = _mm512_scalef_pd(answers.s, back);
   } else {
-    const __m512d units = _mm512_maskz_scalef_pd(
-        below_normal, _mm512_andnot_pd(sign_bit, answers.s),
-        _mm512_max_pd(_mm512_sub_pd(back, _mm512_set1_pd(detail::phi_bands<double>::least_binade)),
-                      _mm512_sub_pd(_mm512_set1_pd(-62.0), binade)));
-    const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
-    s = _mm512_mask_scalef_pd(_mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(answers.s, sign_bit)),
-                              __mmask8(~below_normal), answers.s, back);
+    s = _mm512_mask_scalef_pd(rounded_below_normal(below_normal, answers.s, binade, back), __mmask8(~below_normal),
+                              answers.s, back);
   }
   s = _mm512_mask_max_pd(s, answers.is_impact, s, minus_u);
   s = _mm512_mask_min_pd(s, answers.is_impact, s,
@@ -821,27 +832,18 @@ CONTACT_BATCH_INLINE scaled_eight square_root(const scaled_eight& a) {
   return normalized_eight(_mm512_sqrt_pd(m), exponent);
 }
 
-// scaled<T>::value(): m 2^e rounded once, into the subnormals or to infinity.
-// A result below the normal range (e <= -1022, m in [0.5, 1)) is rounded as
-// the integer of its bits, m 2^(e + 1074) rounded to an integer (roundscale,
-// to nearest even; 2^52 is the least normal's bits), and assembled from
-// them, and the normal route's shift is clamped where it is not taken: no
-// operation underflows, as an underflowing one costs a microcode assist
-// (measured on far-apart lanes, far_eight alone: 19.5 -> 12.2 ns per lane).
+// scaled<T>::value(): m 2^e rounded once, into the subnormals (e <= -1022,
+// m in [0.5, 1): rounded_below_normal) or to infinity; the normal route's
+// shift is clamped where it is not taken, so that no operation underflows, as
+// an underflowing one costs a microcode assist (measured on far-apart lanes,
+// far_eight alone: 19.5 -> 12.2 ns per lane).
 CONTACT_BATCH_INLINE __m512d value_of(const scaled_eight& a) {
-  constexpr double least_binade = detail::phi_bands<double>::least_binade;  // -1074
   constexpr double least_normal_exponent = std::numeric_limits<double>::min_exponent;  // 2^-1022 = 0.5 2^-1021
-  const __m512d sign_bit = _mm512_set1_pd(-0.0);
   const __mmask8 below_normal = _mm512_cmp_pd_mask(a.exponent, _mm512_set1_pd(least_normal_exponent), _CMP_LT_OQ);
-  // from m 2^-62 down the integer rounds to 0 all the same
-  const __m512d units =
-      _mm512_scalef_pd(_mm512_andnot_pd(sign_bit, a.significand),
-                       _mm512_max_pd(_mm512_sub_pd(a.exponent, _mm512_set1_pd(least_binade)), _mm512_set1_pd(-61.0)));
-  const __m512i integer = _mm512_cvtpd_epu64(_mm512_roundscale_pd(units, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
-  const __m512d subnormal = _mm512_or_pd(_mm512_castsi512_pd(integer), _mm512_and_pd(a.significand, sign_bit));
   const __m512d normal =
       _mm512_scalef_pd(a.significand, _mm512_max_pd(a.exponent, _mm512_set1_pd(least_normal_exponent)));
-  return _mm512_mask_blend_pd(below_normal, normal, subnormal);
+  return _mm512_mask_blend_pd(below_normal, normal,
+                              rounded_below_normal(below_normal, a.significand, _mm512_set1_pd(-1.0), a.exponent));
 }
 
 // scaled<T>'s two_sum: the rounded sum and its error; a term more than p + 1
@@ -953,8 +955,8 @@ CONTACT_BATCH_INLINE far_release_answers far_release_eight(__m512d u_in, __m512d
 // double (release_root_rounds_to_infinity decides those).
 template <bool impact_side>
 CONTACT_BATCH_INLINE eight_results far_eight(__m512d u_in, __m512d dy_in, __m512d phi_in) {
-  const __mmask8 eligible = far_eligible(u_in, dy_in, phi_in);
   if constexpr (impact_side) {
+    const __mmask8 eligible = far_eligible(u_in, dy_in, phi_in);
     const scaled_eight u = scaled_of_eight(u_in), dy = scaled_of_eight(dy_in), phi = scaled_of_eight(phi_in);
     const __m512d zero = _mm512_setzero_pd(), sign_bit = _mm512_set1_pd(-0.0);
     const __m512i one_bit = _mm512_set1_epi64(1);
@@ -987,8 +989,13 @@ CONTACT_BATCH_INLINE eight_results far_eight(__m512d u_in, __m512d dy_in, __m512
     const __m256i which = _mm256_mask_blend_epi32(stays, _mm256_set1_epi32(int(contact_case::release)),
                                                   _mm256_set1_epi32(int(contact_case::contact)));
     return {_mm512_mask_blend_pd(stays, release.s, far_contact_eight(u_in, dy_in, phi_in)), which,
-            __mmask8(eligible & (decision.contact | (decision.release & ~release.near_infinity)))};
+            __mmask8(decision.contact | (decision.release & ~release.near_infinity))};  // (decide_far_eight's lanes are eligible)
   }
+}
+
+// The first `remaining` of eight lanes (all eight from 8 up): a batch's last vector.
+CONTACT_BATCH_INLINE __mmask8 first_lanes(int remaining) {
+  return remaining >= 8 ? __mmask8(0xFF) : __mmask8((1u << remaining) - 1);
 }
 
 // The left lanes of dy > 0, eight at a time: gathered, decided
@@ -1015,7 +1022,7 @@ struct far_packed {
   CONTACT_BATCH_INLINE void solve(const double* __restrict u_in, const double* __restrict dy_in, const double* __restrict phi_in,
                                   double* __restrict s, int* __restrict which, contact_case which_case, Answer answer) {
     for (int k = 0; k < count; k += 8) {
-      const __mmask8 active = count - k >= 8 ? __mmask8(0xFF) : __mmask8((1u << (count - k)) - 1);
+      const __mmask8 active = first_lanes(count - k);
       const __m512d one = _mm512_set1_pd(1.0);
       const __m512i lane_index = _mm512_maskz_loadu_epi64(active, index + k);
       const auto [lane_s, answered_lanes] = answer(_mm512_mask_loadu_pd(one, active, u + k),
@@ -1053,7 +1060,7 @@ template <bool impact_side>
   const __m512d one = _mm512_set1_pd(1.0);
   [[maybe_unused]] far_packed contacts, releases;
   for (int k = 0; k < lanes.count; k += 8) {
-    const __mmask8 active = lanes.count - k >= 8 ? __mmask8(0xFF) : __mmask8((1u << (lanes.count - k)) - 1);
+    const __mmask8 active = first_lanes(lanes.count - k);
     const __m512i index = _mm512_maskz_loadu_epi64(active, lanes.index + k);
     const __m512d u_lanes = _mm512_mask_i64gather_pd(one, active, index, u, 8),
                   dy_lanes = _mm512_mask_i64gather_pd(one, active, index, dy, 8),
