@@ -9,7 +9,7 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__AVX512F__)
+#if defined(__SSE2__)
 #include <immintrin.h>
 #endif
 
@@ -276,8 +276,7 @@ struct binary_layout {
 };
 
 // condition ? if_true : if_false without a branch, for conditions that are a
-// coin toss on the inputs that reach them (the sign of u, which side of a clamp
-// a rounding lands on). A compiler may turn ?: into a branch, and does (GCC 12
+// coin toss on the inputs that reach them (the sign of u, say). A compiler may turn ?: into a branch, and does (GCC 12
 // at -O3, on release's operands); on a blend it cannot. With AVX-512 the
 // values stay in their vector registers and the condition becomes a mask
 // register (measured on physical inputs, where each solve makes one to three:
@@ -300,6 +299,39 @@ T select(bool condition, const T& if_true, const T& if_false) {
   } else {
     return condition ? if_true : if_false;
   }
+}
+
+// a < b ? a : b and a > b ? a : b, which are x86's minsd and maxsd (minss,
+// maxss) exactly, whatever the operands: a NaN or a pair of zeros gives b. A
+// clamp written so is one instruction, with no branch, compare or mask
+// register. The stable path's clamps were selects, a compare, a mask and a
+// blend each (measured on the physical scene's inputs, against selects: 0.96
+// of the time per solve in shuffled order; impact inputs alone, which take
+// two clamps, 0.87). Written as intrinsics: GCC 12 compiles the ?: form to
+// minsd where it stands alone, but into a branch inside the band route
+// (measured: the extreme scene's impact inputs 1.2 times slower).
+template <class T>
+T min_of(const T& a, const T& b) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, double>)
+    return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(a), _mm_set_sd(b)));
+  else if constexpr (std::is_same_v<T, float>)
+    return _mm_cvtss_f32(_mm_min_ss(_mm_set_ss(a), _mm_set_ss(b)));
+  else  // (discarded for double and float, as in select)
+#endif
+    return a < b ? a : b;
+}
+
+template <class T>
+T max_of(const T& a, const T& b) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, double>)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(a), _mm_set_sd(b)));
+  else if constexpr (std::is_same_v<T, float>)
+    return _mm_cvtss_f32(_mm_max_ss(_mm_set_ss(a), _mm_set_ss(b)));
+  else  // (discarded for double and float, as in select)
+#endif
+    return a > b ? a : b;
 }
 
 // phi and a factor x of a product phi x, as factors of the same exact product
