@@ -116,6 +116,14 @@ int main(int argc, char** argv) {
                      scenes[i].name.c_str(), scenes[k].file.c_str());
         bad = true;
       }
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (scenes[i].batch_reference && scenes[k].batch_reference) {
+        std::fprintf(stderr, "%s:%ld: batch_reference is already set by scene '%s' (%s): at most one scene sets it\n",
+                     scenes[i].file.c_str(), scenes[i].batch_reference_line, scenes[k].name.c_str(),
+                     scenes[k].file.c_str());
+        bad = true;
+      }
   if (bad) return 1;
   if (check_only) {
     for (const auto& s : scenes) std::printf("%s: scene %s is well-formed\n", s.file.c_str(), s.name.c_str());
@@ -133,6 +141,7 @@ int main(int argc, char** argv) {
   report::measure_options options;
   options.raw = raw;
   for (const auto& s : scenes) results.push_back(report::measure(s, options));
+  report::measure_batch_across_scenes(results);
   info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool plotted = report::write_report(out_dir, results, info, raw);
   std::fprintf(stderr, "contact-report: wrote %s/report.md, results.csv, results.json%s in %.1f s\n", out_dir.c_str(),

@@ -221,6 +221,7 @@ void measure_timings(const scene& s, const std::vector<input>& inputs, scene_res
     if (!asks_for(r, check::timing)) continue;
     const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
     const std::string prefix = s.name + "|" + std::to_string(k) + "|";
+    if (&r == batch_timing_run(s)) result.batch_lanes = lanes;
     if (std::find(r.types.begin(), r.types.end(), "double") != r.types.end())
       time_candidates(r, lanes, result.timing);
     for (const auto& type : r.types) {
@@ -282,6 +283,48 @@ void simulate_oscillator(const scene& s, scene_result& result) {
 }
 
 }  // namespace
+
+void measure_batch_across_scenes(std::vector<scene_result>& results) {
+  const scene_result* reference = nullptr;
+  std::vector<scene_result*> timed;
+  for (auto& r : results)
+    if (!r.batch_lanes.empty()) {
+      timed.push_back(&r);
+      if (r.s.batch_reference) reference = &r;
+    }
+  if (!reference) return;
+  const run& rounds = *batch_timing_run(reference->s);  // its repetitions and min_time
+  collector c;
+  auto name_of_scene = [](const scene_result& r) { return "batch across scenes|" + r.s.name; };
+  std::vector<std::shared_ptr<stream_arrays>> data;
+  for (const auto* r : timed) {
+    data.push_back(stream_data(r->batch_lanes));
+    c.items_per_iteration[name_of_scene(*r)] = static_cast<long>(r->batch_lanes.size());
+  }
+  std::fprintf(stderr, "contact-report: batch across scenes, against scene %s\n", reference->s.name.c_str());
+  for (int round = 0; round < rounds.repetitions; ++round)
+    for (std::size_t k = 0; k < timed.size(); ++k) {
+      const std::string name = name_of_scene(*timed[k]) + "#" + std::to_string(round);
+      benchmark::RegisterBenchmark(name.c_str(), [d = data[k]](benchmark::State& state) {
+        for (auto _ : state) {
+          contact::solve_batch(d->u, d->dy, d->phi, d->s, d->which);
+          benchmark::ClobberMemory();
+        }
+      })->Repetitions(1)->MinTime(rounds.min_time)->MinWarmUpTime(rounds.min_time / 2)->Unit(benchmark::kNanosecond);
+    }
+  run_benchmarks(c);
+  const std::vector<double>& reference_ns = c.ns[name_of_scene(*reference)];
+  for (auto* r : timed) {
+    batch_across_result b;
+    b.reference = reference->s.name;
+    b.ns = c.ns[name_of_scene(*r)];
+    spread(b.ns, b.median, b.min, b.max);
+    for (std::size_t round = 0; round < std::min(b.ns.size(), reference_ns.size()); ++round)
+      b.ratios.push_back(b.ns[round] / reference_ns[round]);
+    spread(b.ratios, b.ratio_median, b.ratio_min, b.ratio_max);
+    r->batch_across = std::move(b);
+  }
+}
 
 scene_result measure(const scene& s, const measure_options& options) {
   const auto start = std::chrono::steady_clock::now();

@@ -11,4 +11,9 @@ struct measure_options {
 
 scene_result measure(const scene& s, const measure_options& options);
 
+// Times the batch kernel on the timing inputs of every measured scene that
+// times it in double, all in the same rounds, and compares each round with
+// the reference scene's (batch_reference); nothing without a reference.
+void measure_batch_across_scenes(std::vector<scene_result>& results);
+
 }  // namespace report

@@ -313,6 +313,31 @@ void write_batch_headline(std::ostream& md, const scene_result& r, json& headlin
         "predictor partly learns by heart: it flatters the scalar paths.\n\n";
 }
 
+// The batch kernel on every scene's timing inputs, timed in the same rounds
+// (measure_batch_across_scenes): a ratio of two scenes that no change of the
+// machine's load between them moves.
+void write_batch_across_scenes(std::ostream& md, const std::vector<scene_result>& scenes, json& headline) {
+  std::vector<const scene_result*> timed;
+  for (const auto& r : scenes)
+    if (r.batch_across) timed.push_back(&r);
+  if (timed.empty()) return;
+  const std::string& reference = timed.front()->batch_across->reference;
+  md << "### Batch across scenes (double): ns per lane, every scene timed in the same rounds\n\n"
+     << "| scene | ns per lane (median) | over " << reference << " (median of the rounds' ratios) | range of the ratios |\n"
+     << "|---|---:|---:|---:|\n";
+  for (const auto* r : timed) {
+    const auto& b = *r->batch_across;
+    md << "| " << r->s.name << " | " << format_ns(b.median) << " | **" << format_ratio(b.ratio_median) << "** | "
+       << format_ratio(b.ratio_min) << "-" << format_ratio(b.ratio_max) << " |\n";
+    headline["batch_across_scenes"][r->s.name] = {{"ns_per_lane", number(b.median)},
+                                                  {"over_reference", number(b.ratio_median)}};
+  }
+  headline["batch_across_scenes_reference"] = reference;
+  md << "\nEach round times the batch kernel once on each scene's timing inputs (the arrays of the scene's own "
+        "timing), one scene after the other; the ratio of a round divides a scene's time by the reference scene's "
+        "in the same round. The scenes' own timing tables time each scene a minute or more apart.\n\n";
+}
+
 void write_energy_headline(std::ostream& md, const scene_result& r, json& headline) {
   md << "### Energy conservation (scene " << r.s.name << "): maximum relative energy error\n\n"
      << "| type | algorithm | max abs(H[n] - H[0]) / H[0] |\n|---|---|---:|\n";
@@ -334,6 +359,7 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, j
     write_double_iterations(md, algorithms, with_runs, headline);
   }
   write_stable_by_type(md, with_runs, headline);
+  write_batch_across_scenes(md, scenes, headline);
   for (const auto& r : scenes)
     if (!r.throughput.empty()) write_batch_headline(md, r, headline);
   for (const auto& r : scenes)
@@ -587,6 +613,19 @@ json scene_json(const scene_result& r) {
                                  {"gigabytes_per_second", number(t.gigabytes_per_second)},
                                  {"ns_repetitions", reps}});
     }
+  if (r.batch_across) {
+    const auto& b = *r.batch_across;
+    json reps = json::array(), ratios = json::array();
+    for (double x : b.ns) reps.push_back(number(x));
+    for (double x : b.ratios) ratios.push_back(number(x));
+    j["batch_across_scenes"] = {{"reference", b.reference},       {"inputs", r.batch_lanes.size()},
+                                {"ns_median", number(b.median)},  {"ns_min", number(b.min)},
+                                {"ns_max", number(b.max)},        {"ns_repetitions", reps},
+                                {"over_reference_median", number(b.ratio_median)},
+                                {"over_reference_min", number(b.ratio_min)},
+                                {"over_reference_max", number(b.ratio_max)},
+                                {"over_reference_repetitions", ratios}};
+  }
   j["energy"] = json::array();
   for (const auto& e : r.energy) {
     json time = json::array(), envelope = json::array();
@@ -651,6 +690,18 @@ void write_csv(std::ostream& csv, const std::vector<scene_result>& scenes) {
         row(check.c_str(), double_type, t.what, "ns_max", csv_number(t.max));
         row(check.c_str(), double_type, t.what, "gigabytes_per_second", csv_number(t.gigabytes_per_second));
       }
+    if (r.batch_across) {
+      const auto& b = *r.batch_across;
+      const char* across = "batch_across_scenes";
+      row(across, double_type, "batch", "inputs", std::to_string(r.batch_lanes.size()));
+      row(across, double_type, "batch", "repetitions", std::to_string(b.ns.size()));
+      row(across, double_type, "batch", "ns_median", csv_number(b.median));
+      row(across, double_type, "batch", "ns_min", csv_number(b.min));
+      row(across, double_type, "batch", "ns_max", csv_number(b.max));
+      row(across, double_type, "batch", "over_" + b.reference + "_median", csv_number(b.ratio_median));
+      row(across, double_type, "batch", "over_" + b.reference + "_min", csv_number(b.ratio_min));
+      row(across, double_type, "batch", "over_" + b.reference + "_max", csv_number(b.ratio_max));
+    }
     for (const auto& e : r.energy) {
       row("energy", e.type, e.algorithm, "steps", std::to_string(e.steps));
       row("energy", e.type, e.algorithm, "contact_steps", std::to_string(e.contact_steps));

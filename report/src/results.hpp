@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,18 @@ struct throughput_result {
   double gigabytes_per_second = 0;  // bytes_per_lane / ns per lane
 };
 
+// The batch kernel on one scene's timing inputs, timed in the same rounds as
+// on every other scene's (measure_batch_across_scenes): a scene timed a
+// minute after another can meet another load of the shared machine, a round
+// meets the same load on every scene.
+struct batch_across_result {
+  std::string reference;       // the scene that sets batch_reference
+  std::vector<double> ns;      // ns per lane, one per round (CPU time)
+  double median = 0, min = 0, max = 0;
+  std::vector<double> ratios;  // ns over the reference's ns in the same round
+  double ratio_median = 0, ratio_min = 0, ratio_max = 0;
+};
+
 struct energy_result {
   std::string type, algorithm;
   long steps = 0;
@@ -91,6 +104,8 @@ struct scene_result {
   std::vector<timing_result> timing;
   std::vector<throughput_result> throughput;
   std::vector<throughput_result> throughput_cache;  // the same at cache_lanes
+  std::vector<input> batch_lanes;  // the inputs its batch timing in double loops over (none: no such timing)
+  std::optional<batch_across_result> batch_across;
   std::vector<energy_result> energy;
   double seconds = 0;
 };

@@ -14,6 +14,15 @@
 
 namespace report {
 
+const run* batch_timing_run(const scene& s) {
+  for (const run& r : s.runs)
+    if (std::find(r.checks.begin(), r.checks.end(), check::timing) != r.checks.end() &&
+        std::find(r.types.begin(), r.types.end(), "double") != r.types.end() &&
+        std::find(r.methods.begin(), r.methods.end(), method::batch) != r.methods.end())
+      return &r;
+  return nullptr;
+}
+
 namespace {
 
 template <class Names>
@@ -65,6 +74,11 @@ class reader {
       fail(node, "'" + key + "' must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "], not " +
                      std::to_string(value));
     return value;
+  }
+
+  bool boolean(const toml::node& node, const std::string& key) const {
+    if (!node.is_boolean()) fail(node, "'" + key + "' must be true or false");
+    return *node.value<bool>();
   }
 
   double positive(const toml::node& node, const std::string& key) const {
@@ -267,7 +281,7 @@ class reader {
     const toml::node& header_node = require(root, "scene", "a scene file");
     const toml::table* header = header_node.as_table();
     if (!header) fail(header_node, "'scene' must be a table: [scene]");
-    only(*header, {"name", "title", "description", "seed", "mpfr_digits10"}, "[scene]");
+    only(*header, {"name", "title", "description", "seed", "mpfr_digits10", "batch_reference"}, "[scene]");
     const toml::node& name = require(*header, "name", "[scene]");
     s.name = string(name, "name");
     if (s.name.empty() || !std::all_of(s.name.begin(), s.name.end(), [](char c) {
@@ -279,6 +293,10 @@ class reader {
     if (const toml::node* n = header->get("description")) s.description = string(*n, "description");
     if (const toml::node* n = header->get("seed")) s.seed = static_cast<std::uint64_t>(integer(*n, "seed", 0, LONG_MAX));
     if (const toml::node* n = header->get("mpfr_digits10")) s.mpfr_digits10 = static_cast<int>(integer(*n, "mpfr_digits10", 16, 1000));
+    if (const toml::node* n = header->get("batch_reference")) {
+      s.batch_reference = boolean(*n, "batch_reference");
+      s.batch_reference_line = line_of(*n);
+    }
 
     auto tables = [&](const char* key, auto&& each) {
       const toml::node* node = root.get(key);
@@ -320,6 +338,8 @@ class reader {
     if (s.batch_throughput && s.families.empty())
       fail(s.batch_throughput->line, "[throughput] solves the inputs of the scene's families, and it has no [[family]]");
     if (s.energy && !simulates) fail(s.energy->line, "[oscillator] is not used: no [[run]] asks for the energy check");
+    if (s.batch_reference && !batch_timing_run(s))
+      fail(s.batch_reference_line, "batch_reference: no [[run]] of the scene times batch in double");
     if (!s.families.empty() && !solves_families)
       fail(s.families.front().line, "the families are not used: no [[run]] asks for accuracy or timing, and there is no [throughput]");
     return s;

@@ -84,11 +84,18 @@ struct scene {
   std::string name, title, description;
   std::uint64_t seed = 1;
   int mpfr_digits10 = 50;
+  // The scene whose batch ns per lane every scene's is compared against,
+  // timed in the same rounds (measure_batch_across_scenes); at most one.
+  bool batch_reference = false;
+  long batch_reference_line = 0;
   std::vector<family> families;
   std::vector<run> runs;
   std::optional<throughput> batch_throughput;
   std::optional<oscillator> energy;
 };
+
+// The first run that times batch in double, or null.
+const run* batch_timing_run(const scene& s);
 
 // Reads and checks a scene file; throws scene_error.
 scene parse_scene(const std::string& path);

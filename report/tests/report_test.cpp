@@ -632,6 +632,65 @@ checks = ["accuracy"]
   EXPECT_EQ(r.err.find("timed"), std::string::npos);  // no benchmark ran
 }
 
+// Two scenes that time batch in double, one of them the reference: each gets
+// its ns per lane from the shared rounds and, per round, its ratio to the
+// reference's ns of the same round; the reference's own ratios are 1.
+std::string batch_scene(const std::string& name, bool reference, const std::string& dy) {
+  return "[scene]\nname = \"" + name + "\"\n" + (reference ? "batch_reference = true\n" : "") +
+         "[[family]]\nname = \"box\"\ngenerator = \"box\"\nsamples = 64\nu = { log10 = [-6, -3], sign = \"both\" }\n"
+         "dy = " + dy + "\nphi = [1e-2, 1e4]\n"
+         "[[run]]\ntypes = [\"double\"]\nalgorithms = [\"batch\"]\nchecks = [\"timing\"]\ntiming_inputs = 512\n"
+         "repetitions = 3\nmin_time = 0.002\n";
+}
+
+TEST_F(tool, batch_across_scenes_gives_each_round_s_ratio_to_the_reference_scene) {
+  std::ofstream(work / "near.toml") << batch_scene("near", true, "{ log10 = [-6, -3], sign = \"both\" }");
+  std::ofstream(work / "far.toml") << batch_scene("far", false, "{ log2 = [-1000, 1000], sign = \"both\" }");
+  const auto r = run_tool("--scene '" + (work / "near.toml").string() + "' --scene '" + (work / "far.toml").string() +
+                              "' --out '" + (work / "across-out").string() + "'",
+                          "across");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read(work / "across-out" / "results.json"));
+  ASSERT_EQ(j["scenes"].size(), 2u);
+  const json& near = j["scenes"][0]["batch_across_scenes"];
+  const json& far = j["scenes"][1]["batch_across_scenes"];
+  ASSERT_EQ(near["ns_repetitions"].size(), 3u);
+  ASSERT_EQ(far["ns_repetitions"].size(), 3u);
+  EXPECT_EQ(near["reference"], "near");
+  EXPECT_EQ(far["reference"], "near");
+  std::vector<double> ratios;
+  for (std::size_t round = 0; round < 3; ++round) {
+    const double reference_ns = value_of(near["ns_repetitions"][round]);
+    EXPECT_GT(reference_ns, 0);
+    EXPECT_EQ(value_of(near["over_reference_repetitions"][round]), 1.0);
+    const double ratio = value_of(far["over_reference_repetitions"][round]);
+    EXPECT_DOUBLE_EQ(ratio, value_of(far["ns_repetitions"][round]) / reference_ns);
+    ratios.push_back(ratio);
+  }
+  std::sort(ratios.begin(), ratios.end());
+  EXPECT_DOUBLE_EQ(value_of(far["over_reference_median"]), ratios[1]);
+  // results.csv and report.md give the same medians
+  const std::string csv = read(work / "across-out" / "results.csv");
+  EXPECT_NE(csv.find("far,batch_across_scenes,double,batch,over_near_median,"), std::string::npos) << csv;
+  const auto rows = table(read(work / "across-out" / "report.md"), "| scene | ns per lane (median) | over near");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1][0], "far");
+  EXPECT_EQ(rows[1][2], "**" + report::format_ratio(value_of(far["over_reference_median"])) + "**");
+}
+
+TEST_F(tool, two_scenes_that_set_batch_reference_are_an_error_with_file_and_line) {
+  std::ofstream(work / "first.toml") << batch_scene("first", true, "[1e-6, 1e-3]");
+  std::ofstream(work / "second.toml") << batch_scene("second", true, "[1e-6, 1e-3]");
+  const auto r = run_tool("--scene '" + (work / "first.toml").string() + "' --scene '" + (work / "second.toml").string() +
+                              "' --out '" + (work / "twice-out").string() + "'",
+                          "twice");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find((work / "second.toml").string() + ":3: batch_reference is already set by scene 'first'"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(work / "twice-out" / "report.md"));
+}
+
 TEST_F(tool, a_candidate_is_measured_beside_the_algorithms_in_double) {
   std::ofstream(work / "candidate.toml") << R"([scene]
 name = "with_candidate"

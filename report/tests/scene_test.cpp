@@ -265,6 +265,41 @@ TEST(scene, missing_and_unused_parts_are_errors) {
   expect_error("name = \"x\"\n", "name", "unknown key 'name' in the top level");
 }
 
+TEST(scene, batch_reference_is_a_boolean_of_a_scene_that_times_batch_in_double) {
+  const std::string timing_batch = R"([scene]
+name = "x"
+batch_reference = true
+
+[[family]]
+name = "phys"
+generator = "box"
+samples = 10
+u = [1e-6, 1e-3]
+dy = [1e-6, 1e-3]
+phi = [1e-2, 1e4]
+
+[[run]]
+types = ["double"]
+algorithms = ["batch"]
+checks = ["timing"]
+)";
+  const auto s = report::parse_scene_text(timing_batch, "x.toml");
+  EXPECT_TRUE(s.batch_reference);
+  ASSERT_NE(report::batch_timing_run(s), nullptr);
+  EXPECT_FALSE(report::parse_scene_text(good_scene, "good.toml").batch_reference);
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = timing_batch;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  expect_error(with("batch_reference = true", "batch_reference = 1"), "batch_reference = 1",
+               "'batch_reference' must be true or false");
+  expect_error(with("checks = [\"timing\"]", "checks = [\"accuracy\"]"), "batch_reference = true",
+               "no [[run]] of the scene times batch in double");
+  expect_error(with("types = [\"double\"]", "types = [\"float\"]"), "batch_reference = true",
+               "no [[run]] of the scene times batch in double");
+}
+
 TEST(scene, an_unreadable_file_is_an_error_at_line_0) {
   try {
     report::parse_scene("/nonexistent/scene.toml");
