@@ -228,6 +228,42 @@ TEST(Window, LeavesRoomAboveTheLeastNormalValue) {
   EXPECT_EQ(reference::solve(-0.25, 0.3515625, 0.2890625).which, contact_case::release);
 }
 
+// min_of and max_of, the clamps' one instruction, give a < b ? a : b and
+// a > b ? a : b in every registered type: b wherever the comparison fails,
+// for a NaN on either side and for two zeros of either sign (what minsd and
+// maxsd give for double and float, and ?: for the other types). The operands
+// come through a function the compiler cannot see into: GCC 12 folds minsd
+// and maxsd of constants as if they commuted (a NaN or a zero first comes
+// back). The clamps never meet that case: their bounds are non-zero numbers,
+// and s is a number for every valid input.
+template <class T>
+[[gnu::noipa]] T opaque(const T& x) {
+  return x;
+}
+
+TYPED_TEST_SUITE(MinAndMax, all_types, type_names_for_gtest);
+template <class T>
+class MinAndMax : public ::testing::Test {};
+TYPED_TEST(MinAndMax, AreTheComparisonsThatGiveTheSecondOperandWhenTheyFail) {
+  using T = TypeParam;
+  using std::isnan;
+  using std::signbit;
+  const T one = opaque(T(1)), two = opaque(T(2)), zero = opaque(T(0)), minus_zero = opaque(T(-T(0))),
+          nan = opaque(std::numeric_limits<T>::quiet_NaN());
+  EXPECT_EQ(detail::min_of(one, two), one);
+  EXPECT_EQ(detail::min_of(two, one), one);
+  EXPECT_EQ(detail::max_of(one, two), two);
+  EXPECT_EQ(detail::max_of(two, one), two);
+  EXPECT_TRUE(signbit(detail::min_of(zero, minus_zero)));
+  EXPECT_FALSE(signbit(detail::min_of(minus_zero, zero)));
+  EXPECT_TRUE(signbit(detail::max_of(zero, minus_zero)));
+  EXPECT_FALSE(signbit(detail::max_of(minus_zero, zero)));
+  EXPECT_EQ(detail::min_of(nan, one), one);
+  EXPECT_EQ(detail::max_of(nan, one), one);
+  EXPECT_TRUE(isnan(detail::min_of(one, nan)));
+  EXPECT_TRUE(isnan(detail::max_of(one, nan)));
+}
+
 // square_root rounds to nearest in every registered type: it equals MPFR's
 // correctly rounded root of the same x, at T's precision. (The stable path's
 // proofs assume a correctly rounded square root.)
