@@ -643,12 +643,17 @@ std::string batch_scene(const std::string& name, bool reference, const std::stri
          "repetitions = 3\nmin_time = 0.002\n";
 }
 
+// Runs the tool on two scene files of `work`, writing into work/TAG-out.
+command_result run_on_two_scenes(const std::string& first, const std::string& second, const std::string& tag) {
+  return run_tool("--scene '" + (work / first).string() + "' --scene '" + (work / second).string() + "' --out '" +
+                      (work / (tag + "-out")).string() + "'",
+                  tag);
+}
+
 TEST_F(tool, batch_across_scenes_gives_each_round_s_ratio_to_the_reference_scene) {
   std::ofstream(work / "near.toml") << batch_scene("near", true, "{ log10 = [-6, -3], sign = \"both\" }");
   std::ofstream(work / "far.toml") << batch_scene("far", false, "{ log2 = [-1000, 1000], sign = \"both\" }");
-  const auto r = run_tool("--scene '" + (work / "near.toml").string() + "' --scene '" + (work / "far.toml").string() +
-                              "' --out '" + (work / "across-out").string() + "'",
-                          "across");
+  const auto r = run_on_two_scenes("near.toml", "far.toml", "across");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = json::parse(read(work / "across-out" / "results.json"));
   ASSERT_EQ(j["scenes"].size(), 2u);
@@ -681,9 +686,7 @@ TEST_F(tool, batch_across_scenes_gives_each_round_s_ratio_to_the_reference_scene
 TEST_F(tool, two_scenes_that_set_batch_reference_are_an_error_with_file_and_line) {
   std::ofstream(work / "first.toml") << batch_scene("first", true, "[1e-6, 1e-3]");
   std::ofstream(work / "second.toml") << batch_scene("second", true, "[1e-6, 1e-3]");
-  const auto r = run_tool("--scene '" + (work / "first.toml").string() + "' --scene '" + (work / "second.toml").string() +
-                              "' --out '" + (work / "twice-out").string() + "'",
-                          "twice");
+  const auto r = run_on_two_scenes("first.toml", "second.toml", "twice");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find((work / "second.toml").string() + ":3: batch_reference is already set by scene 'first'"),
             std::string::npos)

@@ -68,8 +68,8 @@ cache_lanes = 100
 )";
 
 // The scene text with `from` replaced by `to` (which must occur).
-std::string edited(const std::string& from, const std::string& to) {
-  std::string text = good_scene;
+// `text` (by default the good scene) with its first `from` replaced by `to`.
+std::string edited(const std::string& from, const std::string& to, std::string text = good_scene) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -287,11 +287,7 @@ checks = ["timing"]
   EXPECT_TRUE(s.batch_reference);
   ASSERT_NE(report::batch_timing_run(s), nullptr);
   EXPECT_FALSE(report::parse_scene_text(good_scene, "good.toml").batch_reference);
-  auto with = [&](const std::string& from, const std::string& to) {
-    std::string text = timing_batch;
-    text.replace(text.find(from), from.size(), to);
-    return text;
-  };
+  auto with = [&](const std::string& from, const std::string& to) { return edited(from, to, timing_batch); };
   expect_error(with("batch_reference = true", "batch_reference = 1"), "batch_reference = 1",
                "'batch_reference' must be true or false");
   expect_error(with("checks = [\"timing\"]", "checks = [\"accuracy\"]"), "batch_reference = true",
