@@ -116,14 +116,17 @@ int main(int argc, char** argv) {
                      scenes[i].name.c_str(), scenes[k].file.c_str());
         bad = true;
       }
-  for (std::size_t i = 0; i < scenes.size(); ++i)
-    for (std::size_t k = 0; k < i; ++k)
-      if (scenes[i].batch_reference && scenes[k].batch_reference) {
-        std::fprintf(stderr, "%s:%ld: batch_reference is already set by scene '%s' (%s): at most one scene sets it\n",
-                     scenes[i].file.c_str(), scenes[i].batch_reference_line, scenes[k].name.c_str(),
-                     scenes[k].file.c_str());
-        bad = true;
-      }
+  const report::scene* reference = nullptr;
+  for (const auto& s : scenes) {
+    if (!s.batch_reference) continue;
+    if (reference) {
+      std::fprintf(stderr, "%s:%ld: batch_reference is already set by scene '%s' (%s): at most one scene sets it\n",
+                   s.file.c_str(), s.batch_reference_line, reference->name.c_str(), reference->file.c_str());
+      bad = true;
+    } else {
+      reference = &s;
+    }
+  }
   if (bad) return 1;
   if (check_only) {
     for (const auto& s : scenes) std::printf("%s: scene %s is well-formed\n", s.file.c_str(), s.name.c_str());

@@ -100,6 +100,20 @@ void memory_floor(stream_arrays& a, std::size_t n) {
   }
 }
 
+// The batch kernel over the arrays.
+void batch_kernel(stream_arrays& a, std::size_t) { contact::solve_batch(a.u, a.dy, a.phi, a.s, a.which); }
+
+// One round of `body` over the arrays, as a Google Benchmark of min_time seconds.
+void register_round(const std::string& name, const std::shared_ptr<stream_arrays>& d, const lane_path& body,
+                    double min_time) {
+  benchmark::RegisterBenchmark(name.c_str(), [d, n = d->u.size(), body](benchmark::State& state) {
+    for (auto _ : state) {
+      body(*d, n);
+      benchmark::ClobberMemory();
+    }
+  })->Repetitions(1)->MinTime(min_time)->MinWarmUpTime(min_time / 2)->Unit(benchmark::kNanosecond);
+}
+
 // A scalar solver over the arrays, one call per lane.
 template <class Solve>
 lane_path each_lane(Solve solve) {
@@ -117,7 +131,7 @@ void register_throughput(const std::shared_ptr<stream_arrays>& d, const throughp
   const std::size_t n = d->u.size();
   const lane_path paths[] = {
       memory_floor,
-      [](stream_arrays& a, std::size_t) { contact::solve_batch(a.u, a.dy, a.phi, a.s, a.which); },
+      batch_kernel,
       each_lane([](double u, double dy, double phi) { return contact::solve_stable(u, dy, phi); }),
       each_lane([](double u, double dy, double phi) { return contact::solve_textbook(u, dy, phi); }),
   };
@@ -125,15 +139,8 @@ void register_throughput(const std::shared_ptr<stream_arrays>& d, const throughp
   for (const char* what : throughput_paths) c.items_per_iteration[prefix + what] = static_cast<long>(n);
   // Repetition-major, as in typed.hpp: each round times every path once.
   for (int round = 0; round < t.repetitions; ++round)
-    for (std::size_t k = 0; k < std::size(paths); ++k) {
-      const std::string name = prefix + throughput_paths[k] + "#" + std::to_string(round);
-      benchmark::RegisterBenchmark(name.c_str(), [d, n, body = paths[k]](benchmark::State& state) {
-        for (auto _ : state) {
-          body(*d, n);
-          benchmark::ClobberMemory();
-        }
-      })->Repetitions(1)->MinTime(t.min_time)->MinWarmUpTime(t.min_time / 2)->Unit(benchmark::kNanosecond);
-    }
+    for (std::size_t k = 0; k < std::size(paths); ++k)
+      register_round(prefix + throughput_paths[k] + "#" + std::to_string(round), d, paths[k], t.min_time);
 }
 
 std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
@@ -152,8 +159,6 @@ std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
   return d;
 }
 
-
-bool asks_for(const run& r, check c) { return std::find(r.checks.begin(), r.checks.end(), c) != r.checks.end(); }
 
 // How many inputs of each family fall into each case, by the exact criteria
 // (stable decides them exactly).
@@ -216,12 +221,13 @@ void measure_accuracy(const scene& s, const std::vector<input>& inputs, const me
 void measure_timings(const scene& s, const std::vector<input>& inputs, scene_result& result) {
   collector c;
   std::vector<std::pair<std::string, timing_result>> registered;
+  const run* batch_run = batch_timing_run(s);
   for (std::size_t k = 0; k < s.runs.size(); ++k) {
     const run& r = s.runs[k];
     if (!asks_for(r, check::timing)) continue;
     const std::vector<input> lanes = mixed(inputs, r.timing_inputs, s.seed + k);
     const std::string prefix = s.name + "|" + std::to_string(k) + "|";
-    if (&r == batch_timing_run(s)) result.batch_lanes = lanes;
+    if (&r == batch_run) result.batch_lanes = lanes;
     if (std::find(r.types.begin(), r.types.end(), "double") != r.types.end())
       time_candidates(r, lanes, result.timing);
     for (const auto& type : r.types) {
@@ -303,15 +309,8 @@ void measure_batch_across_scenes(std::vector<scene_result>& results) {
   }
   std::fprintf(stderr, "contact-report: batch across scenes, against scene %s\n", reference->s.name.c_str());
   for (int round = 0; round < rounds.repetitions; ++round)
-    for (std::size_t k = 0; k < timed.size(); ++k) {
-      const std::string name = name_of_scene(*timed[k]) + "#" + std::to_string(round);
-      benchmark::RegisterBenchmark(name.c_str(), [d = data[k]](benchmark::State& state) {
-        for (auto _ : state) {
-          contact::solve_batch(d->u, d->dy, d->phi, d->s, d->which);
-          benchmark::ClobberMemory();
-        }
-      })->Repetitions(1)->MinTime(rounds.min_time)->MinWarmUpTime(rounds.min_time / 2)->Unit(benchmark::kNanosecond);
-    }
+    for (std::size_t k = 0; k < timed.size(); ++k)
+      register_round(name_of_scene(*timed[k]) + "#" + std::to_string(round), data[k], batch_kernel, rounds.min_time);
   run_benchmarks(c);
   const std::vector<double>& reference_ns = c.ns[name_of_scene(*reference)];
   for (auto* r : timed) {

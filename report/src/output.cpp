@@ -100,7 +100,7 @@ const throughput_result* throughput_of(const std::vector<throughput_result>& row
 std::vector<std::pair<std::string, std::string>> rows_of(const scene_result& r) {
   std::vector<std::pair<std::string, std::string>> rows;
   for (const run& x : r.s.runs) {
-    if (std::find(x.checks.begin(), x.checks.end(), check::energy) != x.checks.end() && x.checks.size() == 1) continue;
+    if (asks_for(x, check::energy) && x.checks.size() == 1) continue;
     for (const auto& type : x.types)
       for (method m : x.methods) {
         std::pair<std::string, std::string> row{type, name_of(m)};

@@ -14,10 +14,11 @@
 
 namespace report {
 
+bool asks_for(const run& r, check c) { return std::find(r.checks.begin(), r.checks.end(), c) != r.checks.end(); }
+
 const run* batch_timing_run(const scene& s) {
   for (const run& r : s.runs)
-    if (std::find(r.checks.begin(), r.checks.end(), check::timing) != r.checks.end() &&
-        std::find(r.types.begin(), r.types.end(), "double") != r.types.end() &&
+    if (asks_for(r, check::timing) && std::find(r.types.begin(), r.types.end(), "double") != r.types.end() &&
         std::find(r.methods.begin(), r.methods.end(), method::batch) != r.methods.end())
       return &r;
   return nullptr;

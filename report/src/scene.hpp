@@ -94,6 +94,9 @@ struct scene {
   std::optional<oscillator> energy;
 };
 
+// Whether the run asks for the check.
+bool asks_for(const run& r, check c);
+
 // The first run that times batch in double, or null.
 const run* batch_timing_run(const scene& s);
 

@@ -276,8 +276,9 @@ struct binary_layout {
 };
 
 // condition ? if_true : if_false without a branch, for conditions that are a
-// coin toss on the inputs that reach them (the sign of u, say). A compiler may turn ?: into a branch, and does (GCC 12
-// at -O3, on release's operands); on a blend it cannot. With AVX-512 the
+// coin toss on the inputs that reach them (the sign of u, say). A compiler
+// may turn ?: into a branch, and does (GCC 12 at -O3, on release's
+// operands); on a blend it cannot. With AVX-512 the
 // values stay in their vector registers and the condition becomes a mask
 // register (measured on physical inputs, where each solve makes one to three:
 // 10.1 -> 9.7 ns per solve, minimum of 6 runs; SSE4.1's blendv gained nothing
