@@ -1,12 +1,12 @@
-# CONTACT_VECTOR_FLAGS: the flags that vectorise solve_batch (batch.hpp), for the
-# report and the batch tests: x86-64-v4 (AVX-512, 512-bit vectors) where the build machine
-# runs it, else x86-64-v3 (AVX2 + FMA), else none (the loop stays scalar, the
-# results are the same). -ffp-contract=off keeps the compiler from fusing a*b+c
+# CONTACT_VECTOR_FLAGS: the report's instruction-set flags, for the scalar
+# paths it times: x86-64-v4 (AVX-512) where the build machine runs it, else
+# x86-64-v3 (AVX2 + FMA), else none. (The batch kernels carry their own flags
+# and are chosen at run time: solver/CMakeLists.txt.) -ffp-contract=off keeps the compiler from fusing a*b+c
 # into an fma where the source has none (GNU mode allows it by default), so
 # that batch and scalar paths do the arithmetic as written; -fno-math-errno
 # lets sqrt be an instruction. Neither changes a result: IEEE operations stay
 # correctly rounded, one by one.
-if(CONTACT_REPORT OR CONTACT_TESTS)
+if(CONTACT_REPORT)
   set(CONTACT_VECTOR_ARCH "auto" CACHE STRING "-march for the batch solver's users: auto, none, or a -march value")
   include(CheckCXXSourceRuns)
   function(contact_arch_runs march features result)

@@ -1,5 +1,7 @@
 // contact::solve_batch gives exactly what the scalar stable path gives: the
-// same s, bit for bit, and the same case, for every lane.
+// same s, bit for bit, and the same case, for every lane, on every kernel the
+// library holds that this CPU runs (contact::batch_targets; "scalar" is the
+// path of CPUs without fma). Each test runs every such kernel.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -7,6 +9,8 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "contact/batch.hpp"
@@ -16,6 +20,9 @@
 namespace {
 
 namespace harness = contact::harness;
+
+template <class T>
+using solution_of = contact::solution<T>;
 
 template <class T>
 struct lanes {
@@ -90,43 +97,70 @@ bool identical(T a, T b) {
   return (a == b && std::signbit(a) == std::signbit(b)) || (std::isnan(a) && std::isnan(b));
 }
 
-// solve: the batch kernel under test; by default the one solve_batch picks.
-template <class T, class Solver = void (*)(const T*, const T*, const T*, T*, int*, std::ptrdiff_t)>
-void expect_same_as_scalar(const lanes<T>& in, Solver solve = contact::solve_batch<T>) {
+template <class T>
+using kernel = std::ptrdiff_t (*)(const T*, const T*, const T*, T*, int*, std::ptrdiff_t);
+
+template <class T>
+kernel<T> kernel_of(const contact::batch_target& target) {
+  if constexpr (std::is_same_v<T, double>) return target.solve_double;
+  else return target.solve_float;
+}
+
+// The kernels this CPU runs, printed once, so that a run says which it tested.
+std::vector<contact::batch_target> runnable_targets() {
+  std::vector<contact::batch_target> runnable;
+  for (const auto& t : contact::batch_targets())
+    if (t.supported) runnable.push_back(t);
+  static const bool printed = [&] {
+    std::printf("batch kernels this CPU runs:");
+    for (const auto& t : runnable) std::printf(" %s", t.name);
+    std::printf(" (solve_batch: %s)\n", contact::chosen_batch_target().name);
+    return true;
+  }();
+  (void)printed;
+  return runnable;
+}
+
+// Every runnable kernel gives solve_stable's answer on every lane; returns,
+// per kernel, how many lanes it left to solve_stable.
+template <class T>
+std::vector<std::ptrdiff_t> expect_same_as_scalar(const lanes<T>& in) {
   const auto n = static_cast<std::ptrdiff_t>(in.u.size());
-  std::vector<T> s(in.u.size());
-  std::vector<int> which(in.u.size());
-  solve(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n);
-  long mismatches = 0;
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const auto scalar = contact::solve_stable(in.u[i], in.dy[i], in.phi[i]);
-    const bool same_s = identical(scalar.s, s[i]);
-    if (!same_s || static_cast<int>(scalar.which) != which[i]) {
-      if (++mismatches <= 10)
-        ADD_FAILURE() << std::hexfloat << "u=" << in.u[i] << " dy=" << in.dy[i] << " phi=" << in.phi[i]
-                      << ": batch s=" << s[i] << " case " << which[i] << ", scalar s=" << scalar.s << " case "
-                      << static_cast<int>(scalar.which);
+  std::vector<solution_of<T>> scalar;
+  scalar.reserve(in.u.size());
+  for (std::ptrdiff_t i = 0; i < n; ++i) scalar.push_back(contact::solve_stable(in.u[i], in.dy[i], in.phi[i]));
+  std::vector<std::ptrdiff_t> left_to_scalar;
+  for (const auto& target : runnable_targets()) {
+    std::vector<T> s(in.u.size());
+    std::vector<int> which(in.u.size());
+    left_to_scalar.push_back(kernel_of<T>(target)(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n));
+    long mismatches = 0;
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      if (!identical(scalar[i].s, s[i]) || static_cast<int>(scalar[i].which) != which[i]) {
+        if (++mismatches <= 10)
+          ADD_FAILURE() << target.name << std::hexfloat << ": u=" << in.u[i] << " dy=" << in.dy[i] << " phi=" << in.phi[i]
+                        << ": batch s=" << s[i] << " case " << which[i] << ", scalar s=" << scalar[i].s << " case "
+                        << static_cast<int>(scalar[i].which);
+      }
     }
+    EXPECT_EQ(mismatches, 0) << target.name << " on " << n << " lanes";
   }
-  EXPECT_EQ(mismatches, 0);
+  return left_to_scalar;
 }
 
 TEST(Batch, DoubleLanesEqualScalarStableBitForBit) { expect_same_as_scalar(inputs<double>(400000, 1)); }
 
-// The common case of a synthesis engine: whole blocks of physical lanes, none of which needs the scalar fix-up.
-TEST(Batch, PhysicalLanesEqualScalarStableBitForBit) { expect_same_as_scalar(inputs<double>(100000, 5, true)); }
-
-// solve_batch takes the AVX-512 kernel for double where the compiler targets it;
-// the portable kernel must then give the same lanes too.
-TEST(Batch, PortableKernelDoubleLanesEqualScalarStableBitForBit) {
-  expect_same_as_scalar(inputs<double>(200000, 6), contact::batch_detail::solve_lanes<double>);
-}
-
-TEST(Batch, PortableKernelPhysicalLanesEqualScalarStableBitForBit) {
-  expect_same_as_scalar(inputs<double>(100000, 7, true), contact::batch_detail::solve_lanes<double>);
-}
-
 TEST(Batch, FloatLanesEqualScalarStableBitForBit) { expect_same_as_scalar(inputs<float>(200000, 2)); }
+
+// Physical inputs lie in the common window: the vectors answer every lane
+// but the last few of the array (fewer than a vector).
+TEST(Batch, PhysicalLanesEqualScalarStableAndStayInVectors) {
+  const auto in = inputs<double>(100000, 5, true);
+  const auto left = expect_same_as_scalar(in);
+  const auto targets = runnable_targets();
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    if (std::string(targets[k].name) != "scalar") EXPECT_LT(left[k], 16) << targets[k].name;
+}
 
 TEST(Batch, TheTestInputsHoldEveryCaseAndMostlyVectorLanes) {
   const auto in = inputs<double>(100000, 3);
@@ -137,7 +171,7 @@ TEST(Batch, TheTestInputsHoldEveryCaseAndMostlyVectorLanes) {
     inside += contact::detail::safe_window<double>::holds(in.u[i], in.dy[i], in.phi[i]);
   }
   for (int c = 0; c < 5; ++c) EXPECT_GT(seen[c], 1000) << "case " << c;
-  EXPECT_GT(inside, 70000);  // most lanes take the vectorised path
+  EXPECT_GT(inside, 70000);
 }
 
 TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
@@ -157,12 +191,11 @@ TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
   }
 }
 
-// A batch whose lanes outside the window all lie in whole vectors (AVX-512:
-// vectors that run moved), after a vector inside.
+// Whole vectors outside the window, in a band, after a vector inside it.
 TEST(Batch, WholeVectorsOutsideTheWindowAtTheEndEqualScalarStable) {
   lanes<double> in;
-  for (int k = 0; k < 8; ++k) in.add(1e-4 * (k + 1), -2e-4, 10.0);            // inside the window
-  for (int k = 0; k < 16; ++k) in.add(1e-300 * (k + 1), -2e-300, 0x1p-700);  // outside, in a band
+  for (int k = 0; k < 16; ++k) in.add(1e-4 * (k + 1), -2e-4, 10.0);            // inside the window
+  for (int k = 0; k < 32; ++k) in.add(1e-300 * (k + 1), -2e-300, 0x1p-700);  // outside, in a band
   expect_same_as_scalar(in);
 }
 
@@ -229,95 +262,23 @@ bool inside_a_band_box(T u, T dy, T phi) {
   return std::abs(u_binade - dy_binade) <= band.top - 1 - band.lowest;
 }
 
-// lane<true> answers only lanes inside a band box, and answers them as
-// solve_stable does; and it answers most of those whose phi lies outside the
-// vector window and whose s is normal (the rest: the pre-test's undecided
-// lanes, and s subnormal before it moves back), the band's room included.
-
+// Lanes inside a band box are moved and answered in vector code, but for the
+// few whose s cannot move back (subnormal or overflowing once moved back).
 template <class T>
-void expect_band_lanes_solved_in_vector_code(const lanes<T>& in) {
-  using case_number = std::make_signed_t<contact::batch_detail::bits_t<T>>;
-  long eligible = 0, solved = 0, solved_at_room = 0, mismatches = 0, outside_boxes = 0;
-
-  for (std::size_t i = 0; i < in.u.size(); ++i) {
-    const T u = in.u[i], dy = in.dy[i], phi = in.phi[i];
-    T s;
-    case_number which;
-    contact::batch_detail::bits_t<T> undecided;
-    const bool lane_solved = contact::batch_detail::lane<true>(u, dy, phi, s, which, undecided) != 0;
-    const auto scalar = contact::solve_stable(u, dy, phi);
-    const bool box = inside_a_band_box(u, dy, phi);
-    if (lane_solved && (!identical(scalar.s, s) || static_cast<int>(scalar.which) != static_cast<int>(which))) {
-      if (++mismatches <= 10)
-        ADD_FAILURE() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi << ": lane s=" << s << " case "
-                      << which << ", scalar s=" << scalar.s << " case " << static_cast<int>(scalar.which);
-    }
-    if (lane_solved && !box && ++outside_boxes <= 10)
-      ADD_FAILURE() << std::hexfloat << "outside every band box: u=" << u << " dy=" << dy << " phi=" << phi;
-    // float's subnormal phi straddles two bands; the lane leaves it to the scalar path
-    constexpr int least = contact::detail::common_window_least_phi<T>, width = 2 * contact::detail::common_window<T>;
-    const bool phi_outside_vector_window = (std::ilogb(phi) >= least + width || std::ilogb(phi) < least) &&
-                                           (std::is_same_v<T, double> || std::isnormal(phi));
-    if (box && phi_outside_vector_window && (std::isnormal(scalar.s) || scalar.s == 0)) {
-      ++eligible;
-      solved += lane_solved;
-      const auto band = contact::detail::phi_bands<T>::of_phi(phi);
-      solved_at_room += lane_solved && std::abs(contact::detail::binade_of(u) - contact::detail::binade_of(dy)) ==
-                                           band.top - 1 - band.lowest;
-    }
-  }
-  EXPECT_EQ(mismatches, 0);
-  EXPECT_EQ(outside_boxes, 0);
-  EXPECT_GT(eligible, 1000);
-  EXPECT_GT(solved, eligible * 9 / 10) << "of " << eligible;
-  EXPECT_GT(solved_at_room, 50);
+void expect_band_lanes_answered_in_vectors(const lanes<T>& in) {
+  long in_a_box = 0;
+  for (std::size_t i = 0; i < in.u.size(); ++i) in_a_box += inside_a_band_box(in.u[i], in.dy[i], in.phi[i]);
+  const auto left = expect_same_as_scalar(in);
+  const auto targets = runnable_targets();
+  const long outside = static_cast<long>(in.u.size()) - in_a_box;
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    if (std::string(targets[k].name) != "scalar")
+      EXPECT_LT(left[k], outside + in_a_box / 10) << targets[k].name << ": " << in_a_box << " of " << in.u.size() << " lanes in a band box";
 }
 
-// With the exact decision, lane<true, true> answers every lane lane<true>
-// answers, the same way, and the lanes lane<true> leaves undecided near the
-// contact/release boundary, as solve_stable does.
-template <class T>
-void expect_exact_decision_answers_undecided_lanes(const lanes<T>& in) {
-  using case_number = std::make_signed_t<contact::batch_detail::bits_t<T>>;
-  long undecided_lanes = 0, wrong = 0;
-  for (std::size_t i = 0; i < in.u.size(); ++i) {
-    const T u = in.u[i], dy = in.dy[i], phi = in.phi[i];
-    T s, s_exact;
-    case_number which, which_exact;
-    contact::batch_detail::bits_t<T> undecided, undecided_after_exact;
-    const bool solved = contact::batch_detail::lane<true>(u, dy, phi, s, which, undecided) != 0;
-    const bool exact_solved =
-        contact::batch_detail::lane<true, true>(u, dy, phi, s_exact, which_exact, undecided_after_exact) != 0;
-    const auto scalar = contact::solve_stable(u, dy, phi);
-    undecided_lanes += undecided != 0;
-    const bool same = identical(scalar.s, s_exact) && static_cast<int>(scalar.which) == static_cast<int>(which_exact);
-    if (exact_solved != (solved || undecided != 0) || (exact_solved && !same)) {
-      if (++wrong <= 10)
-        ADD_FAILURE() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi << ": exact lane s=" << s_exact
-                      << " case " << which_exact << " (solved " << exact_solved << "), scalar s=" << scalar.s;
-    }
-  }
-  EXPECT_EQ(wrong, 0);
-  EXPECT_GT(undecided_lanes, in.u.size() / 20) << "of " << in.u.size();
-}
+TEST(Batch, DoubleBandLanesEqualScalarStableInVectors) { expect_band_lanes_answered_in_vectors(band_inputs<double>(23, 200)); }
 
-TEST(Batch, ExactDecisionAnswersTheLanesNearTheContactBoundary) {
-  for (std::uint64_t seed : {31, 32}) {
-    harness::seeded_source source(seed);
-    using harness::distribution;
-    const distribution dy_wide{distribution::shape::log10, -10, 2, 1}, phi_wide{distribution::shape::log10, -3, 12, 1};
-    lanes<double> near_double;
-    lanes<float> near_float;
-    for (int i = 0; i < 20000; ++i) {
-      const auto x = harness::contact_release_boundary<double>(source, dy_wide, phi_wide, 4);
-      near_double.add(x.u, x.dy, x.phi);
-      const auto y = harness::contact_release_boundary<float>(source, dy_wide, phi_wide, 4);
-      near_float.add(y.u, y.dy, y.phi);
-    }
-    expect_exact_decision_answers_undecided_lanes(near_double);
-    expect_exact_decision_answers_undecided_lanes(near_float);
-  }
-}
+TEST(Batch, FloatBandLanesEqualScalarStableInVectors) { expect_band_lanes_answered_in_vectors(band_inputs<float>(24, 200)); }
 
 // Within 8 ulps of u = dy (phi - 1), at physical magnitudes (inside the window)
 // and at 2^+-500 (in phi's bands): nearly every lane needs the exact decision.
@@ -341,142 +302,73 @@ TEST(Batch, LanesNearTheContactBoundaryEqualScalarStableBitForBit) {
   expect_same_as_scalar(near_the_contact_boundary(33, 40000));
 }
 
-#if defined(__AVX512F__)
-// The lanes of eight vector answers (rescaled_eight, far_eight) for in's lanes
-// i to i + 7: bit for bit solve_stable's where `answered` says so, each
-// mismatch a failure (the first 10 listed) added to `mismatches`. Returns the
-// lanes answered, as a mask.
-unsigned check_eight(const contact::batch_detail::eight_results& r, const lanes<double>& in, std::size_t i,
-                     long& mismatches) {
-  alignas(64) double s[8];
-  alignas(32) int which[8];
-  _mm512_store_pd(s, r.s);
-  _mm256_store_si256(reinterpret_cast<__m256i*>(which), r.which);
-  for (int k = 0; k < 8; ++k) {
-    if (!(r.answered >> k & 1)) continue;
-    const auto scalar = contact::solve_stable(in.u[i + k], in.dy[i + k], in.phi[i + k]);
-    if ((!identical(scalar.s, s[k]) || static_cast<int>(scalar.which) != which[k]) && ++mismatches <= 10)
-      ADD_FAILURE() << std::hexfloat << "u=" << in.u[i + k] << " dy=" << in.dy[i + k] << " phi=" << in.phi[i + k]
-                    << ": vector s=" << s[k] << " case " << which[k] << ", scalar s=" << scalar.s << " case "
-                    << static_cast<int>(scalar.which);
-  }
-  return r.answered;
-}
-
-contact::batch_detail::eight_results rescaled_eight_of(const lanes<double>& in, std::size_t i) {
-  return contact::batch_detail::rescaled_eight(_mm512_loadu_pd(in.u.data() + i), _mm512_loadu_pd(in.dy.data() + i),
-                                               _mm512_loadu_pd(in.phi.data() + i));
-}
-
-// The AVX-512 rescaled pass decides those lanes itself (decide_eight's exact
-// sum), as solve_stable does, instead of leaving them to the scalar path.
-TEST(Batch, RescaledPassDecidesTheLanesNearTheContactBoundaryInVectorCode) {
-  const auto in = near_the_contact_boundary(34, 40000);
-  long answered = 0, mismatches = 0;
-  for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8)
-    answered += std::popcount(check_eight(rescaled_eight_of(in, i), in, i, mismatches));
-  EXPECT_EQ(mismatches, 0);
-  EXPECT_GT(answered, long(in.u.size()) * 9 / 10) << "of " << in.u.size();
-}
-
-// Lanes that the AVX-512 kernel answers in vector code and the portable
-// kernel leaves to the scalar path, one kind per vector: subnormal u or dy,
-// an impact in its own room (gap further below u than the band's room for
-// contact and release), free flight at any magnitudes and any valid phi
-// (0 and phi in no band included), and releases whose s overflows or falls
-// among the subnormals once moved back.
-lanes<double> lanes_for_the_avx512_kernel(std::uint64_t seed, int vectors_per_kind) {
+// Millions of lanes of every kind: random bit patterns (NaN, infinity,
+// zeros and subnormals among them), log-uniform over the whole range, the
+// specials and their neighbours, both case boundaries hit within a few ulps,
+// and subnormal u, dy and phi.
+template <class T>
+lanes<T> lanes_of_every_kind(std::size_t count, std::uint64_t seed) {
+  using bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+  using limits = std::numeric_limits<T>;
   harness::seeded_source source(seed);
-  auto power = [&](double low, double high) { return std::exp2(low + (high - low) * harness::unit(source)); };
-  auto sign = [&] { return harness::coin(source) ? 1.0 : -1.0; };
-  auto subnormal = [&] { return std::numeric_limits<double>::denorm_min() * double(source.integer(1, 1L << 40)); };
-  lanes<double> in;
-  for (int v = 0; v < vectors_per_kind; ++v) {
-    for (int k = 0; k < 8; ++k) in.add(sign() * subnormal(), sign() * power(-1000, -200), power(-10, 10));
-    for (int k = 0; k < 8; ++k) {  // phi in [2^-520, 2^-480], band 4: room 740 binades, an impact's 918
-      const double u = power(400, 500);
-      in.add(u, -u * power(-900, -760), power(-520, -480));
+  auto random_bits = [&] { return std::bit_cast<T>(bits(source.integer(0, std::numeric_limits<long>::max()) * 2654435761u)); };
+  const T specials[] = {T(0), T(-0.0), limits::denorm_min(), limits::min(), (limits::max)(), limits::infinity(),
+                        limits::quiet_NaN(), T(1), T(-1), contact::detail::phi_bands<T>::end, limits::epsilon()};
+  using harness::distribution;
+  const distribution dy_wide{distribution::shape::log2, -limits::max_exponent + 8, limits::max_exponent - 8, 1},
+      phi_wide{distribution::shape::log2, -limits::max_exponent + 8, limits::max_exponent - 8, 1};
+  lanes<T> in;
+  while (in.u.size() < count) {
+    switch (source.integer(0, 5)) {
+      case 0: in.add(random_bits(), random_bits(), random_bits()); break;
+      case 1: { const auto x = harness::whole_range<T>(source); in.add(x.u, x.dy, x.phi); break; }
+      case 2: {
+        const T a = specials[source.integer(0, 10)], b = specials[source.integer(0, 10)];
+        const T c = std::fabs(specials[source.integer(0, 10)]);
+        in.add(contact::detail::ulp_steps(a, source.integer(-2, 2)), harness::random_sign(source, b),
+               contact::detail::ulp_steps(c, source.integer(0, 2)));
+        break;
+      }
+      case 3: { const auto x = harness::contact_release_boundary<T>(source, dy_wide, phi_wide, 4); in.add(x.u, x.dy, x.phi); break; }
+      case 4: { const auto x = harness::free_impact_boundary<T>(source, dy_wide, phi_wide, 4); in.add(x.u, x.dy, x.phi); break; }
+      default: {
+        auto subnormal = [&] { return harness::random_sign(source, limits::denorm_min() * T(source.integer(1, 1L << (limits::digits - 2)))); };
+        const auto x = harness::whole_range<T>(source);
+        const int which = int(source.integer(0, 2));
+        in.add(which == 0 ? subnormal() : x.u, which == 1 ? subnormal() : x.dy, which == 2 ? std::fabs(subnormal()) : x.phi);
+        break;
+      }
     }
-    for (int k = 0; k < 8; ++k) {
-      const double binade = -1074 + 2097 * harness::unit(source), phis[] = {0.0, power(-1074, 1023), 0x1p1022};
-      in.add(-power(binade, 1023), -std::exp2(binade), phis[source.integer(0, 2)]);  // u <= -dy
-    }
-    for (int k = 0; k < 8; ++k) {
-      const double dy = power(900, 1000);
-      in.add(sign() * dy * power(-10, 0), dy, power(200, 900));
-    }
-    for (int k = 0; k < 8; ++k) in.add(sign() * power(-1060, -1000), subnormal(), power(0, 40));
   }
   return in;
 }
 
-TEST(Batch, Avx512KernelAnswersSubnormalOperandsImpactRoomFreeFlightAndOverflowInVectorCode) {
-  const auto in = lanes_for_the_avx512_kernel(35, 100);
-  constexpr int kinds = 5;
-  long answered[kinds] = {}, lanes_of[kinds] = {}, mismatches = 0;
-  for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8) {
-    const std::size_t kind = (i / 8) % kinds;
-    lanes_of[kind] += 8;
-    answered[kind] += std::popcount(check_eight(rescaled_eight_of(in, i), in, i, mismatches));
-  }
-  EXPECT_EQ(mismatches, 0);
-  const char* names[kinds] = {"subnormal u", "impact room", "free flight", "overflowing release", "subnormal s"};
-  for (int kind = 0; kind < kinds; ++kind) EXPECT_GT(answered[kind], lanes_of[kind] * 9 / 10) << names[kind];
-  expect_same_as_scalar(in);
+TEST(Batch, MillionsOfDoubleLanesOfEveryKindEqualScalarStable) {
+  for (std::uint64_t seed = 40; seed < 44; ++seed) expect_same_as_scalar(lanes_of_every_kind<double>(1000000, seed));
 }
 
-// u and dy further apart than any band's room (400 to 2000 binades), every
-// case, phi anywhere: the lanes that the AVX-512 kernel solves with
-// detail::scaled<double>'s operations on eight lanes (far_eight) instead of
-// the scalar scaled path, bit for bit as that path does.
-TEST(Batch, FarApartLanesTakeTheScaledPathInVectorCode) {
-  harness::seeded_source source(36);
-  auto power = [&](double low, double high) { return std::exp2(low + (high - low) * harness::unit(source)); };
-  auto sign = [&] { return harness::coin(source) ? 1.0 : -1.0; };
-  lanes<double> in;
-  for (int i = 0; i < 8000; ++i) {
-    const double larger = power(-674, 1023), smaller = power(-1074, std::log2(larger) - 400);
-    const bool u_larger = harness::coin(source);
-    in.add(sign() * (u_larger ? larger : smaller), sign() * (u_larger ? smaller : larger), power(-1074, 1023));
-  }
-  long answered = 0, mismatches = 0, not_free = 0;
-  for (std::size_t i = 0; i + 8 <= in.u.size(); i += 8) {
-    const __m512d u = _mm512_loadu_pd(in.u.data() + i), dy = _mm512_loadu_pd(in.dy.data() + i),
-                  phi = _mm512_loadu_pd(in.phi.data() + i);
-    auto r = contact::batch_detail::far_eight<false>(u, dy, phi);
-    const auto impacts = contact::batch_detail::far_eight<true>(u, dy, phi);
-    EXPECT_EQ(r.answered & impacts.answered, 0);
-    r.s = _mm512_mask_mov_pd(r.s, impacts.answered, impacts.s);
-    r.which = _mm256_mask_mov_epi32(r.which, impacts.answered, impacts.which);
-    r.answered |= impacts.answered;
-    answered += std::popcount(check_eight(r, in, i, mismatches));
-    for (std::size_t k = i; k < i + 8; ++k)
-      not_free += contact::solve_stable(in.u[k], in.dy[k], in.phi[k]).which != contact::contact_case::free;
-  }
-  EXPECT_EQ(mismatches, 0);
-  // free flight (three eighths of them) is answered before, by moved_back_eight; the rest but a few
-  // (binades that leave the case undecided, a release root within an ulp of overflow)
-  EXPECT_GT(answered, not_free * 99 / 100) << "of " << not_free;
-  expect_same_as_scalar(in);
+TEST(Batch, MillionsOfFloatLanesOfEveryKindEqualScalarStable) {
+  for (std::uint64_t seed = 50; seed < 54; ++seed) expect_same_as_scalar(lanes_of_every_kind<float>(1000000, seed));
 }
-#endif
-
-TEST(Batch, RescaledLanesTakePhiBandsAsSolveStableDoes) {
-  expect_band_lanes_solved_in_vector_code(band_inputs<double>(21, 200));
-  expect_band_lanes_solved_in_vector_code(band_inputs<float>(22, 200));
-}
-
-TEST(Batch, DoubleBandLanesEqualScalarStableBitForBit) {
-  const auto in = band_inputs<double>(23, 200);
-  expect_same_as_scalar(in);                                            // AVX-512 where compiled for it
-  expect_same_as_scalar(in, contact::batch_detail::solve_lanes<double>);  // the portable kernel
-}
-
-TEST(Batch, FloatBandLanesEqualScalarStableBitForBit) { expect_same_as_scalar(band_inputs<float>(24, 200)); }
 
 TEST(Batch, LongDoubleLanesEqualScalarStable) {
   const auto in = inputs<long double>(2000, 4);
-  expect_same_as_scalar(in);
+  std::vector<long double> s(in.u.size());
+  std::vector<int> which(in.u.size());
+  contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), std::ptrdiff_t(in.u.size()));
+  for (std::size_t i = 0; i < in.u.size(); ++i) {
+    const auto scalar = contact::solve_stable(in.u[i], in.dy[i], in.phi[i]);
+    EXPECT_TRUE(identical(scalar.s, s[i]));
+    EXPECT_EQ(static_cast<int>(scalar.which), which[i]);
+  }
+}
+
+TEST(Batch, ScalarIsAlwaysAKernelAndTheLastOne) {
+  const auto targets = contact::batch_targets();
+  ASSERT_FALSE(targets.empty());
+  EXPECT_STREQ(targets.back().name, "scalar");
+  EXPECT_TRUE(targets.back().supported);
+  EXPECT_TRUE(contact::chosen_batch_target().supported);
 }
 
 }  // namespace

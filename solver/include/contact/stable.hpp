@@ -29,6 +29,25 @@
 namespace contact {
 namespace stable_form {
 
+// Each formula below is written once, for a scalar Num and for the batch
+// kernel's lanes alike (detail::lane_vector): the kernel evaluates the parts
+// of every case on all lanes and divides once, numerator and denominator
+// selected by case; the scalar path takes its case's parts and divides.
+
+// A quotient before its one division.
+template <class Num>
+struct fraction {
+  Num numerator, denominator;
+};
+
+// The discriminants of (A.30) and (A.32), u^2 + 4 term: term = phi gap (u - gap)
+// for the impact, phi dy^2 for the release.
+template <class Num>
+[[gnu::always_inline]] inline Num discriminant(const Num& u, const Num& term) {
+  using detail::fused_multiply_add;
+  return fused_multiply_add(u, u, Num(4) * term);
+}
+
 // (A.30), from the quadratic (A.9) (1+phi) s^2 + (u - 2 phi dy) s + phi dy^2 = 0,
 // with gap = -dy >= 0 and u > gap. Its smaller root is wanted; with dy <= 0 and
 // u > 0 both summands of the numerator are negative, so the textbook root has no
@@ -41,45 +60,57 @@ namespace stable_form {
 // as exact pairs (two_sum, and the fma that gives phi gap's rounding error),
 // and the quotient by D's high part is corrected by its residual. What is
 // left is the root's error, at most half of N, and the last rounding: 2.5 ulps
-// proven (proofs/gappa/stable_impact.g; 1.15 found). The reciprocal of D
-// depends on phi alone, so the only division runs beside the square root.
+// proven (proofs/gappa/stable_impact.g). The reciprocal of D depends on phi
+// alone, so the only division runs beside the square root.
 template <class Num>
 struct impact_root {
   Num s, square_root;  // (A.30)'s root, and the square root of its discriminant
 };
 
-// `phi_is_subnormal` (the band route's subnormal-phi path, for binary32 and
-// binary64): each product with phi is formed from normal factors of the same
-// exact product, (phi 2^64) (x 2^-64) (detail::subnormal_phi_factors), as a
-// subnormal operand costs a microcode assist. The values are the same.
-//
-// Always inlined: GCC 12 otherwise calls it (or impact, below) out of line
-// from solve_stable's common path, and saves registers around the call
-// (measured on the physical scene's inputs in shuffled order: 0.95 of the
-// time per solve inlined).
+// D = 2 (1 + phi), from 1 + phi as an exact pair
+template <class Num>
+[[gnu::always_inline]] inline Num impact_denominator(const detail::exact_pair<Num>& one_plus_phi) {
+  return Num(2) * one_plus_phi.high;
+}
+
+// -N / D from N's parts and inverse = 1 / D: push = phi gap with its rounding
+// error push_error, root = sqrt of the discriminant. `factors` are phi's and
+// gap's (detail::factors_of): with a subnormal phi the products with phi are
+// formed from normal factors of the same exact products, (phi 2^64) (x 2^-64),
+// as a subnormal operand costs a microcode assist; the values are the same.
+template <bool phi_is_subnormal, class Num>
+[[gnu::always_inline]] inline Num impact_quotient(const Num& u, const Num& push, const Num& push_error, const Num& root,
+                                                  const detail::exact_pair<Num>& one_plus_phi, const Num& inverse,
+                                                  const detail::normal_factors<Num>& factors) {
+  using detail::fused_multiply_add;
+  using detail::two_sum;
+  const auto head = two_sum(u, Num(2) * push);
+  const auto numerator = two_sum(head.high, root);
+  const Num numerator_low = numerator.low + (head.low + Num(2) * push_error);
+  const Num denominator = impact_denominator(one_plus_phi);
+  const Num quotient = numerator.high * inverse;
+  const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
+  // 2 phi q: (2 phi 2^64) (q 2^-64) where phi is subnormal (1 + phi's low part is phi itself)
+  const Num twice_low = phi_is_subnormal ? Num(Num(2) * factors.phi) : Num(one_plus_phi.low + one_plus_phi.low);
+  const Num low_quotient = phi_is_subnormal ? Num(quotient * factors.down) : quotient;
+  const Num correction = fused_multiply_add(-low_quotient, twice_low, Num(residual + numerator_low));
+  return -fused_multiply_add(correction, inverse, quotient);
+}
+
+// Always inlined, as is impact below: a call from solve_stable's common path
+// would save registers around it.
 template <bool phi_is_subnormal = false, class Num>
 [[gnu::always_inline]] inline impact_root<Num> impact_with_square_root(const Num& u, const Num& gap, const Num& phi) {
   using detail::fused_multiply_add;
   using detail::square_root;
   using detail::two_sum;
-  // (a subnormal phi is 1 + phi's low part itself, and 2 phi q is (2 phi 2^64) (q 2^-64))
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
   const Num push = factors.phi * factors.x;  // phi |dy|
   const Num push_error = fused_multiply_add(factors.phi, factors.x, -push);
-  const Num discriminant = fused_multiply_add(u, u, Num(4) * (push * (u - gap)));
-  const Num root = square_root(discriminant);
-  const auto head = two_sum(u, Num(2) * push);
-  const auto numerator = two_sum(head.high, root);
-  const Num numerator_low = numerator.low + (head.low + Num(2) * push_error);
+  const Num root = square_root(discriminant(u, Num(push * (u - gap))));
   const auto one_plus_phi = two_sum(Num(1), phi);
-  const Num denominator = Num(2) * one_plus_phi.high;
-  const Num inverse = Num(1) / denominator;
-  const Num quotient = numerator.high * inverse;
-  const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
-  const Num twice_low = phi_is_subnormal ? Num(Num(2) * factors.phi) : Num(one_plus_phi.low + one_plus_phi.low);
-  const Num low_quotient = phi_is_subnormal ? Num(quotient * factors.down) : quotient;
-  const Num correction = fused_multiply_add(-low_quotient, twice_low, Num(residual + numerator_low));
-  return {-fused_multiply_add(correction, inverse, quotient), root};
+  const Num inverse = Num(1) / impact_denominator(one_plus_phi);
+  return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, inverse, factors), root};
 }
 
 template <bool phi_is_subnormal = false, class Num>
@@ -90,34 +121,46 @@ template <bool phi_is_subnormal = false, class Num>
 // (A.31) corrected: (A.18) (1+phi) s + u - 2 phi dy = 0 gives
 // s = (2 phi dy - u) / (1 + phi). The numerator cancels as s -> 0; the fma
 // leaves it a single rounding. 2 dy, not 2 phi, so that nothing overflows.
+// phi_factor dy_factor is phi dy (detail::factors_of).
+template <class Num>
+[[gnu::always_inline]] inline fraction<Num> contact_fraction(const Num& u, const Num& phi, const Num& phi_factor,
+                                                             const Num& dy_factor) {
+  using detail::fused_multiply_add;
+  return {fused_multiply_add(phi_factor, Num(2) * dy_factor, -u), Num(1) + phi};
+}
+
 template <bool phi_is_subnormal = false, class Num>
 Num contact(const Num& u, const Num& dy, const Num& phi) {
-  using detail::fused_multiply_add;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
-  return fused_multiply_add(factors.phi, Num(2) * factors.x, -u) / (Num(1) + phi);
+  const auto [numerator, denominator] = contact_fraction(u, phi, factors.phi, factors.x);
+  return numerator / denominator;
 }
 
 // (A.32), from (A.23) corrected: s^2 + u s - phi dy^2 = 0, positive root
 // s = (-u + sqrt(u^2 + 4 phi dy^2)) / 2. For u > 0 the sum cancels, so the root
 // is rationalised: s = 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2)).
+// stiffness_term = phi dy^2, root = sqrt(discriminant(u, stiffness_term)).
+template <class Num>
+[[gnu::always_inline]] inline fraction<Num> release_fraction(const Num& u, const Num& stiffness_term, const Num& root) {
+  if constexpr (detail::binary_bits<Num>) {
+    // operands selected, not a branch: the sign of u is a coin toss on
+    // physical inputs, and a select costs less than a mispredicted branch
+    const auto rationalised = u > Num(0);
+    using detail::select;
+    return {select(rationalised, Num(Num(2) * stiffness_term), Num(root - u)), select(rationalised, Num(u + root), Num(2))};
+  } else {
+    if (u > Num(0)) return {Num(2) * stiffness_term, u + root};
+    return {root - u, Num(2)};
+  }
+}
+
 template <bool phi_is_subnormal = false, class Num>
 Num release(const Num& u, const Num& dy, const Num& phi) {
-  using detail::fused_multiply_add;
   using detail::square_root;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
   const Num stiffness_term = (factors.phi * factors.x) * dy;  // phi dy^2
-  const Num root = square_root(fused_multiply_add(u, u, Num(4) * stiffness_term));
-  if constexpr (std::is_floating_point_v<Num>) {
-    // one division, its operands selected: the sign of u is a coin toss on
-    // physical inputs, and a select costs less than a mispredicted branch
-    const bool rationalised = u > Num(0);
-    const Num numerator = detail::select(rationalised, Num(Num(2) * stiffness_term), Num(root - u));
-    const Num denominator = detail::select(rationalised, Num(u + root), Num(2));
-    return numerator / denominator;
-  } else {
-    if (u > Num(0)) return Num(2) * stiffness_term / (u + root);
-    return (root - u) / Num(2);
-  }
+  const auto [numerator, denominator] = release_fraction(u, stiffness_term, square_root(discriminant(u, stiffness_term)));
+  return numerator / denominator;
 }
 
 }  // namespace stable_form
@@ -128,10 +171,10 @@ namespace detail {
 // exact pair of two_prod. Out of line: the few inputs that need it pay for
 // the call, the common path keeps a small stack frame.
 template <class T>
-[[gnu::noinline]] bool exact_sum_nonnegative(T u, T dy, T phi) {
+[[gnu::noinline]] auto exact_sum_nonnegative(T u, T dy, T phi) {
   const auto product = two_prod(phi, dy);
   const T terms[4] = {u, dy, -product.high, -product.low};
-  return !(leading_component_of_exact_sum(terms) < 0);
+  return !(leading_component_of_exact_sum(terms) < T(0));
 }
 
 // The sign of the exact sum u + dy - phi dy (dy > 0, phi >= 0, u finite) when
@@ -173,7 +216,7 @@ struct contact_estimate {
 template <class T>
 contact_estimate<T> estimate_contact(const T& sum, const T& phi_factor, const T& dy_factor) {
   using std::fabs;
-  return {fused_multiply_add(-phi_factor, dy_factor, sum), std::numeric_limits<T>::epsilon() * fabs(sum)};
+  return {fused_multiply_add(-phi_factor, dy_factor, sum), T(std::numeric_limits<scalar_of_t<T>>::epsilon()) * fabs(sum)};
 }
 
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0, where
@@ -262,10 +305,8 @@ namespace detail {
 // about half the time, and a branch there is a coin toss.
 template <class T>
 T clamped_below_nonpositive(const T& s, const T& dy) {  // dy <= 0: s < dy, else next_down(dy)
-  if constexpr (detail::hardware_binary<T>) {
-    using layout = binary_layout<T>;
-    const T below = std::bit_cast<T>(typename layout::bits((std::bit_cast<typename layout::bits>(dy) | layout::sign) + 1));
-    return min_of(s, below);  // s < dy ? s : below (s < below iff s < dy, or s is below itself)
+  if constexpr (binary_bits<T>) {
+    return min_of(s, step_away_from_zero(with_sign_bit(dy)));  // s < dy ? s : below (s < below iff s < dy, or s is below itself)
   } else {
     return s < dy ? s : next_down(dy);
   }
@@ -273,10 +314,8 @@ T clamped_below_nonpositive(const T& s, const T& dy) {  // dy <= 0: s < dy, else
 
 template <class T>
 T clamped_above_positive(const T& s, const T& dy) {  // dy > 0: s > dy, else next_up(dy)
-  if constexpr (detail::hardware_binary<T>) {
-    using bits = typename binary_layout<T>::bits;
-    const T above = std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + 1));
-    return max_of(s, above);  // s > dy ? s : above (likewise)
+  if constexpr (binary_bits<T>) {
+    return max_of(s, step_away_from_zero(dy));  // s > dy ? s : above (likewise)
   } else {
     return s > dy ? s : next_up(dy);
   }

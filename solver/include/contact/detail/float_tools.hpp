@@ -37,6 +37,30 @@ int precision_of() {
 template <class T>
 concept hardware_binary = std::is_same_v<T, float> || std::is_same_v<T, double>;
 
+// A vector of lanes of float or double (the batch kernel's): its comparisons
+// give a mask, not a bool, and it names the scalar of its lanes. The stable
+// formulas are written once for scalars and lanes alike; where a scalar would
+// branch, lanes select.
+template <class T>
+concept lane_vector = requires { typename T::lane_scalar; };
+
+// T itself, or the scalar of T's lanes
+template <class T>
+struct scalar_of {
+  using type = T;
+};
+template <lane_vector T>
+struct scalar_of<T> {
+  using type = typename T::lane_scalar;
+};
+template <class T>
+using scalar_of_t = typename scalar_of<T>::type;
+
+// float, double and their lanes: the types whose bit patterns the stable
+// path steps (clamps) and whose selects need no branch
+template <class T>
+concept binary_bits = hardware_binary<T> || lane_vector<T>;
+
 // a + b == sum + error exactly, barring overflow (Knuth's TwoSum).
 template <class T>
 struct exact_pair {
@@ -119,6 +143,9 @@ T fused_multiply_add(const T& a, const T& b, const T& c) {
   }
 }
 
+template <class T>
+T select(bool condition, const T& if_true, const T& if_false);
+
 // The largest component of the exact sum of N numbers as an expansion, by
 // Shewchuk's grow-expansion: the components stay non-overlapping and in order
 // of increasing magnitude but for zeros among them, so the last non-zero one
@@ -142,9 +169,9 @@ T leading_component_of_exact_sum(const T (&terms)[N]) {
     }
     expansion[i] = carry;
   }
-  T leading{};  // zero, for the scalar types and for a GCC vector of lanes alike
+  T leading = T(0);
 #pragma GCC unroll 16
-  for (int i = 0; i < N; ++i) leading = expansion[i] != 0 ? expansion[i] : leading;
+  for (int i = 0; i < N; ++i) leading = select(expansion[i] != T(0), expansion[i], leading);
   return leading;
 }
 
@@ -274,6 +301,24 @@ struct binary_layout {
     return bits(magnitude - second_normal_binade) < span;
   }
 };
+
+// x with its sign bit set (-|x|), and the value one bit pattern further from
+// zero than x: for a finite x, next_down or next_up away from zero (from -0,
+// the least negative subnormal). The clamps of the stable path step dy so,
+// in scalars and in lanes alike (the lanes have their own overloads).
+template <class T>
+  requires hardware_binary<T>
+T with_sign_bit(const T& x) {
+  using layout = binary_layout<T>;
+  return std::bit_cast<T>(typename layout::bits(std::bit_cast<typename layout::bits>(x) | layout::sign));
+}
+
+template <class T>
+  requires hardware_binary<T>
+T step_away_from_zero(const T& x) {
+  using bits = typename binary_layout<T>::bits;
+  return std::bit_cast<T>(bits(std::bit_cast<bits>(x) + 1));
+}
 
 // condition ? if_true : if_false without a branch, for conditions that are a
 // coin toss on the inputs that reach them (the sign of u, say). A compiler

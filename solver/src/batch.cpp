@@ -1,0 +1,70 @@
+// solve_batch's dispatch: the kernels this build holds, the CPU's choice among
+// them (Highway's run-time detection), and the scalar path for the lanes the
+// kernels cannot answer. Compiled for the baseline instruction set.
+#include "contact/batch.hpp"
+
+#include <hwy/targets.h>
+
+#include <algorithm>
+#include <array>
+
+#include "batch_kernels.hpp"
+
+namespace contact {
+namespace batch_kernels {
+
+void solve_stable_lane(double u, double dy, double phi, double& s, int& which) {
+  const solution<double> r = solve_stable(u, dy, phi);
+  s = r.s;
+  which = static_cast<int>(r.which);
+}
+
+void solve_stable_lane(float u, float dy, float phi, float& s, int& which) {
+  const solution<float> r = solve_stable(u, dy, phi);
+  s = r.s;
+  which = static_cast<int>(r.which);
+}
+
+}  // namespace batch_kernels
+
+namespace {
+
+bool cpu_runs(std::int64_t highway_target) { return (hwy::SupportedTargets() & highway_target) != 0; }
+
+const auto& all_targets() {
+  static const std::array targets{
+#define CONTACT_BATCH_KERNEL(name)                                                                                 \
+  batch_target{#name, cpu_runs(batch_kernels::name::highway_target()), &batch_kernels::name::solve_double, \
+               &batch_kernels::name::solve_float},
+#include "batch_kernels.inc"
+#undef CONTACT_BATCH_KERNEL
+      batch_target{"scalar", true, &batch_kernels::solve_stable_lanes<double>, &batch_kernels::solve_stable_lanes<float>}};
+  return targets;
+}
+
+// (scalar, the last, is always supported)
+const batch_target& first_supported() {
+  return *std::find_if(all_targets().begin(), all_targets().end(), [](const batch_target& t) { return t.supported; });
+}
+
+}  // namespace
+
+std::span<const batch_target> batch_targets() { return all_targets(); }
+
+const batch_target& chosen_batch_target() {
+  static const batch_target& chosen = first_supported();
+  return chosen;
+}
+
+namespace batch_detail {
+
+void solve_chosen(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n) {
+  chosen_batch_target().solve_double(u, dy, phi, s, which, n);
+}
+
+void solve_chosen(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
+  chosen_batch_target().solve_float(u, dy, phi, s, which, n);
+}
+
+}  // namespace batch_detail
+}  // namespace contact
