@@ -10,9 +10,11 @@ For README.md, CONTRIBUTING.md, docs/*.md and the folder READMEs listed in FILES
   - every "section N", "sections N and M" or "§N" names a numbered heading (## N. or
     ### N.M) of the file it refers to: the last .md file named before it in the same
     paragraph, or the file itself when that has numbered headings;
-  - every back-quoted path under a top-level folder of the project exists.
+  - every back-quoted path under a top-level folder of the project, or under a folder
+    of the file's own folder, exists (with or without its extension).
 Prints one line FILE:LINE: reason per problem and exits 1 if there is any.
 """
+import glob
 import os
 import re
 import sys
@@ -179,9 +181,13 @@ def main(root):
                 if " " in code or not re.fullmatch(r"[\w./+-]+", code) or "/" not in code:
                     continue
                 first = code.split("/", 1)[0]
-                if first not in top_folders or code.startswith(GENERATED):
+                local = here != root and os.path.isdir(os.path.join(here, first))
+                if (first not in top_folders and not local) or code.startswith(GENERATED):
                     continue
-                if not os.path.exists(os.path.join(root, code.rstrip("/"))):
+                bases = [root, here] if local else [root]
+                # a name without its extension (an obligation, a program) counts too
+                if not any(os.path.exists(os.path.join(base, code.rstrip("/"))) or
+                           glob.glob(glob.escape(os.path.join(base, code)) + ".*") for base in bases):
                     problems.append(f"{name}:{line_of(match.start())}: path `{code}`: no such file or folder")
     for problem in problems:
         print(problem)
