@@ -13,13 +13,21 @@
 namespace contact {
 namespace batch_kernels {
 
-void solve_stable_lane(double u, double dy, double phi, double& s, int& which) {
+// Cloned for x86-64-v3 where the compiler can (run-time choice by the loader):
+// what solve_stable inlines here then uses the fma instruction, not a call.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define CONTACT_SCALAR_CLONES [[gnu::target_clones("arch=x86-64-v3", "default")]]
+#else
+#define CONTACT_SCALAR_CLONES
+#endif
+
+CONTACT_SCALAR_CLONES void solve_stable_lane(double u, double dy, double phi, double& s, int& which) {
   const solution<double> r = solve_stable(u, dy, phi);
   s = r.s;
   which = static_cast<int>(r.which);
 }
 
-void solve_stable_lane(float u, float dy, float phi, float& s, int& which) {
+CONTACT_SCALAR_CLONES void solve_stable_lane(float u, float dy, float phi, float& s, int& which) {
   const solution<float> r = solve_stable(u, dy, phi);
   s = r.s;
   which = static_cast<int>(r.which);

@@ -14,6 +14,7 @@
 // overflows once moved back, invalid input) go to solve_stable, one by one.
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -152,76 +153,179 @@ struct band_fields {
   static constexpr const auto& impact_lowest = column<&bands::band::impact_lowest, 0>;
 };
 
-// What a vector of lanes answers: s, the case number as T, and which lanes.
-template <class D>
-struct answers {
-  lanes<D> s;
-  hn::Vec<D> which;
+// Lanes packed by what they cost: the impacts and releases (a square root
+// and a division each) and the contacts (a division), so that no lane waits
+// on another case's operations. Each holds the lane's operands as the stable
+// path takes them (moved by phi's band where the lane is), the move in bits
+// (0: unmoved), and the lane's index in the arrays.
+constexpr std::ptrdiff_t block = 256;
+
+template <class T>
+struct packed_lanes {
+  using bits = typename detail::binary_layout<T>::bits;
+  static constexpr std::ptrdiff_t capacity = block + 64;  // a whole vector past the count
+  alignas(64) T u[capacity], dy[capacity], phi[capacity];
+  alignas(64) bits offset[capacity];
+  alignas(64) std::make_signed_t<bits> index[capacity];
+  std::ptrdiff_t count = 0;
+  bool moved = false;  // some lane has a non-zero offset
 };
 
-// solve_cases<true> on every lane of (u, dy, phi), on which plain arithmetic
-// is safe: each case's parts from stable.hpp, one division and one square
-// root per lane, numerator and denominator selected by case. The lanes of
-// `answerable` that the pre-test leaves undecided (near the contact
-// boundary) take the exact decision, on the vectors that hold one.
+// The lane orders that bring a mask's lanes first, by the mask's bits: the
+// compaction of vectors of up to 8 lanes (Highway's own compress copies a
+// table onto the stack at every call for them; 16 lanes of float on AVX-512
+// have an instruction).
+template <std::size_t lanes_per_vector>
+inline constexpr auto compaction_orders = [] {
+  std::array<std::array<std::uint8_t, lanes_per_vector>, (std::size_t(1) << lanes_per_vector)> orders{};
+  for (std::size_t bits = 0; bits < orders.size(); ++bits) {
+    std::size_t k = 0;
+    for (std::size_t j = 0; j < lanes_per_vector; ++j)
+      if ((bits >> j) & 1) orders[bits][k++] = std::uint8_t(j);
+    for (std::size_t j = 0; j < lanes_per_vector; ++j)
+      if (!((bits >> j) & 1)) orders[bits][k++] = std::uint8_t(j);
+  }
+  return orders;
+}();
+
+// Appends the lanes of `lanes_of` to `into`, in order.
 template <class D>
-HWY_INLINE answers<D> answer_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi, lane_mask<D> answerable) {
+HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, hn::Mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
+                     hn::Vec<D> phi, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Vec<hn::RebindToSigned<D>> index) {
+  const hn::RebindToUnsigned<D> du;
+  const hn::RebindToSigned<D> di;
+  const std::ptrdiff_t at = into.count;
+  constexpr std::size_t lanes_per_vector = hn::MaxLanes(D());
+  if constexpr (lanes_per_vector <= 8 && !HWY_HAVE_SCALABLE) {
+    std::uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, lanes_of, bits);
+    const hn::Rebind<std::uint8_t, decltype(di)> d8;
+    const hn::Rebind<std::int32_t, decltype(di)> d32;
+    const auto order32 = hn::PromoteTo(d32, hn::LoadU(d8, compaction_orders<lanes_per_vector>[bits[0]].data()));
+    hn::Vec<decltype(di)> order_lanes;
+    if constexpr (sizeof(hn::TFromD<D>) == 8) order_lanes = hn::PromoteTo(di, order32);
+    else order_lanes = order32;
+    const auto order = hn::IndicesFromVec(d, order_lanes);
+    auto first = [&](auto v) { return hn::BitCast(hn::DFromV<decltype(v)>(), hn::TableLookupLanes(hn::BitCast(d, v), order)); };
+    hn::StoreU(first(u), d, into.u + at);
+    hn::StoreU(first(dy), d, into.dy + at);
+    hn::StoreU(first(phi), d, into.phi + at);
+    hn::StoreU(first(offset), du, into.offset + at);
+    hn::StoreU(first(index), di, into.index + at);
+  } else {
+    hn::StoreU(hn::Compress(u, lanes_of), d, into.u + at);
+    hn::StoreU(hn::Compress(dy, lanes_of), d, into.dy + at);
+    hn::StoreU(hn::Compress(phi, lanes_of), d, into.phi + at);
+    hn::StoreU(hn::Compress(offset, hn::RebindMask(du, lanes_of)), du, into.offset + at);
+    hn::StoreU(hn::Compress(index, hn::RebindMask(di, lanes_of)), di, into.index + at);
+  }
+  into.count += static_cast<std::ptrdiff_t>(hn::CountTrue(d, lanes_of));
+}
+
+// A lane's s, computed on its moved operands, moved back: exact where s is 0
+// or the lane unmoved, or s normal above the least binade before the move and
+// normal after it (solve_stable's moved_back); `moved_back` is false on the
+// others, which underflow or overflow once moved back: solve_stable solves them.
+template <class D>
+HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back) {
+  using layout = detail::binary_layout<hn::TFromD<D>>;
+  using U = typename layout::bits;
+  constexpr int significand_bits = layout::significand_bits;
+  const hn::RebindToUnsigned<D> du;
+  const auto s_bits = hn::BitCast(du, s.v);
+  const auto s_magnitude = hn::And(s_bits, hn::Set(du, U(~layout::sign)));
+  const auto unmoved = hn::Or(hn::Eq(s_magnitude, hn::Zero(du)), hn::Eq(offset, hn::Zero(du)));
+  const auto above_least_binade =
+      unsigned_less(du, hn::Sub(s_magnitude, hn::Set(du, U(2 * layout::least_normal))),
+                    hn::Set(du, U((layout::exponent_field << significand_bits) - 2 * layout::least_normal)));
+  const auto normal_once_moved =
+      unsigned_less(du, hn::Sub(hn::Sub(s_magnitude, offset), hn::Set(du, layout::least_normal)),
+                    hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal)));
+  moved_back = hn::RebindMask(d, hn::Or(unmoved, hn::And(above_least_binade, normal_once_moved)));
+  return hn::IfThenElse(hn::RebindMask(d, unmoved), s.v, hn::BitCast(d, hn::Sub(s_bits, offset)));
+}
+
+// (A.30) and (A.32): the impacts (dy <= 0) and the releases of `lanes`, each
+// with its square root and one division: the impact's inverse of its
+// denominator, or the release's quotient.
+template <class D>
+HWY_INLINE lanes<D> answer_roots(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   using L = lanes<D>;
-  using T = hn::TFromD<D>;
-  const auto no_contact_before = dy <= L(0);
-  const auto contact_before = dy > L(0);
-  const L sum = u + dy;                                // impact: u - gap
-  const L phi_dy = phi * fabs(dy);                     // impact: push = phi gap; release: phi dy
-  const L term = phi_dy * select(no_contact_before, sum, dy);  // impact: push (u - gap); release: phi dy^2
+  const auto impact_side = dy <= L(0);
+  const L sum = u + dy;                                      // impact: u - gap
+  const L phi_dy = phi * fabs(dy);                           // impact: push = phi gap; release: phi dy
+  const L term = phi_dy * select(impact_side, sum, dy);      // impact: push (u - gap); release: phi dy^2
   const L root = square_root(stable_form::discriminant(u, term));
-
-  const auto [estimate, margin] = detail::estimate_contact(sum, phi, dy);  // (A.21)'s pre-test
-  const auto decided = fabs(estimate) > margin;
-  auto stays = estimate > L(0);
-  if (!hn::AllFalse(d, (answerable & contact_before & !decided).m)) [[unlikely]]
-    stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(u, dy, phi));
-
-  const auto is_free = no_contact_before & (sum <= L(0));
-  const auto is_impact = no_contact_before & !(sum <= L(0));
-  const auto is_contact = contact_before & stays;
   const auto one_plus_phi = detail::two_sum(L(1), phi);
-  const auto contact = stable_form::contact_fraction(u, phi, phi, dy);
   const auto release = stable_form::release_fraction(u, term, root);
-  const L numerator = select(is_impact, L(1), select(is_contact, contact.numerator, release.numerator));
-  const L denominator = select(is_impact, stable_form::impact_denominator(one_plus_phi),
-                               select(is_contact, contact.denominator, release.denominator));
-  const L quotient = numerator / denominator;  // impact: the inverse of its denominator
+  const L quotient = select(impact_side, L(1), release.numerator) /
+                     select(impact_side, stable_form::impact_denominator(one_plus_phi), release.denominator);
   const L push_error = fused_multiply_add(phi, fabs(dy), -phi_dy);
   const L impact = stable_form::impact_quotient<false>(u, phi_dy, push_error, root, one_plus_phi, quotient,
                                                        detail::factors_of<false>(phi, fabs(dy)));
-  L s = select(is_contact, detail::contact_clamped(quotient, dy), detail::clamped_above_positive(quotient, dy));
-  s = select(is_impact, detail::impact_clamped(impact, u, dy), s);
-  s = select(is_free, -u, s);
-  const auto which = hn::IfThenElse(is_free.m, hn::Set(d, T(1)),
-                                    hn::IfThenElse(is_impact.m, hn::Set(d, T(2)),
-                                                   hn::IfThenElse(is_contact.m, hn::Set(d, T(3)), hn::Set(d, T(4)))));
-  return {s, which};
+  return select(impact_side, detail::impact_clamped(impact, u, dy), detail::clamped_above_positive(quotient, dy));
 }
 
+// (A.31): the contacts, one division each.
 template <class D>
-HWY_INLINE void store(D d, const answers<D>& a, hn::TFromD<D>* s, int* which) {
-  hn::StoreU(a.s.v, d, s);
-  if constexpr (sizeof(hn::TFromD<D>) == 8) {
-    const hn::Rebind<std::int32_t, D> di32;
-    hn::StoreU(hn::DemoteTo(di32, a.which), di32, which);
-  } else {
-    const hn::RebindToSigned<D> di32;
-    hn::StoreU(hn::ConvertTo(di32, a.which), di32, which);
+HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  const auto contact = stable_form::contact_fraction(u, phi, phi, dy);
+  return detail::contact_clamped(lanes<D>(contact.numerator / contact.denominator), dy);
+}
+
+// The packed lanes' s by `answer`, written to their places (their cases are
+// written by the first pass); those whose s cannot move back, by
+// solve_stable. Returns how many those were.
+template <class D, class Answer>
+HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
+                                       const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
+                                       int* which_out, Answer answer) {
+  using T = hn::TFromD<D>;
+  using L = lanes<D>;
+  const hn::RebindToUnsigned<D> du;
+  const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
+  for (std::ptrdiff_t k = lanes_in.count; k < lanes_in.count + width; ++k) {  // the last vector's unused lanes: 1 = 1 = 1
+    lanes_in.u[k] = lanes_in.dy[k] = lanes_in.phi[k] = T(1);
+    lanes_in.offset[k] = 0;
   }
+  std::ptrdiff_t left = 0;
+  for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
+    L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
+    auto moved_back = hn::FirstN(d, width);
+    if (lanes_in.moved) s = move_back(d, s, hn::Load(du, lanes_in.offset + k), moved_back);
+    const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
+    if (lanes_here == width) {
+      hn::ScatterIndex(s.v, d, s_out, hn::Load(hn::RebindToSigned<D>(), lanes_in.index + k));
+    } else {
+      alignas(64) T s_lanes[64];
+      hn::Store(s.v, d, s_lanes);
+      for (std::ptrdiff_t j = 0; j < lanes_here; ++j) s_out[lanes_in.index[k + j]] = s_lanes[j];
+    }
+    if (!hn::AllTrue(d, moved_back)) [[unlikely]] {
+      std::uint8_t moved_back_bits[16] = {};  // one bit per lane
+      hn::StoreMaskBits(d, moved_back, moved_back_bits);
+      for (std::ptrdiff_t j = 0; j < lanes_here; ++j)
+        if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) {
+          const auto i = static_cast<std::ptrdiff_t>(lanes_in.index[k + j]);
+          solve_stable_lane(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
+          ++left;
+        }
+    }
+  }
+  lanes_in.count = 0;
+  lanes_in.moved = false;
+  return left;
 }
 
-// A vector with lanes outside the common window: free flight answered for
-// any valid input; the other lanes moved by phi's band where it lets them
-// (solve_stable's band route), solved, and moved back where s stays normal;
-// the rest by solve_stable.
+// The first pass over one vector at lane i: free flight answered (s = -u for
+// any valid input, written now); the other lanes that the vectors can take,
+// inside the common window or moved by phi's band (solve_stable's band route),
+// have their case decided as solve_stable decides it and are packed by it;
+// the rest are noted for solve_stable.
 template <class D>
-HWY_NOINLINE std::ptrdiff_t solve_moved(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
-                              hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, hn::Mask<D> inside_window) {
+HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
+                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, packed_lanes<hn::TFromD<D>>& roots,
+                            packed_lanes<hn::TFromD<D>>& contacts, packed_lanes<hn::TFromD<D>>& scalar) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -234,103 +338,112 @@ HWY_NOINLINE std::ptrdiff_t solve_moved(D d, const hn::TFromD<D>* u_in, const hn
   const auto magnitude = hn::Set(du, U(~layout::sign));
   const auto u_bits = hn::BitCast(du, u), dy_bits = hn::BitCast(du, dy), phi_bits = hn::BitCast(du, phi);
   const auto abs_u = hn::And(u_bits, magnitude), abs_dy = hn::And(dy_bits, magnitude);
-  const auto least_normal = hn::Set(du, layout::least_normal);
-  const auto normal_span = hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal));
-  auto is_normal = [&](hn::Vec<decltype(du)> magnitude_bits) {
-    return unsigned_less(du, hn::Sub(magnitude_bits, least_normal), normal_span);
-  };
 
-  const lane_mask<D> inside{inside_window};
-  const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
-  const lane_mask<D> free_flight{hn::And(
-      hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))), hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
-      hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)))};
-
-  // the band of phi: its table row, and the shift (in binades) that moves the larger of |u|, |dy| to its top
-  auto field_of = [&](hn::Vec<decltype(du)> magnitude_bits) {
-    return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
-  };
-  const auto u_field = field_of(abs_u), dy_field = field_of(abs_dy);
-  const auto larger = hn::Max(u_field, dy_field), smaller = hn::Min(u_field, dy_field);
-  const auto band = hn::ShiftRight<fields::bands::band_bits>(
-      hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
-  const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))),
-                                    hn::GatherIndex(di, fields::impact_lowest.data(), band),
-                                    hn::GatherIndex(di, fields::lowest.data(), band));
-  const auto shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
-  const auto phi_in_a_band =
-      unsigned_less(du, hn::Sub(phi_bits, least_normal), hn::Set(du, U(std::bit_cast<U>(fields::bands::end) - layout::least_normal)));
-  const lane_mask<D> fits{hn::RebindMask(
-      d, hn::AndNot(hn::RebindMask(di, inside_window),
-                    hn::And(hn::RebindMask(di, hn::And(hn::And(is_normal(abs_u), is_normal(abs_dy)), phi_in_a_band)),
-                            hn::Not(hn::Lt(hn::Add(smaller, shift), least)))))};
-  const auto answerable = inside | fits;
-  const auto offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(hn::RebindMask(di, fits.m), shift)));
-
-  // the lanes that cannot be answered solve 1 = 1 = 1: no subnormal operand or result
-  const auto one = hn::Set(d, T(1));
-  const L moved_u = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(u_bits, offset)), one);
-  const L moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
-  answers<D> a = answer_cases(d, moved_u, moved_dy, L(hn::IfThenElse(answerable.m, phi, one)), answerable);
-
-  // s moved back: exact where it is 0, or normal above the least binade
-  // before the move and normal after it (solve_stable's moved_back); the
-  // others, subnormal or overflowing once moved back, go to solve_stable
-  const auto s_bits = hn::BitCast(du, a.s.v);
-  const auto s_magnitude = hn::And(s_bits, magnitude);
-  const auto unmoved = hn::Or(hn::Eq(s_magnitude, hn::Zero(du)), hn::Eq(offset, hn::Zero(du)));
-  const auto above_least_binade =
-      unsigned_less(du, hn::Sub(s_magnitude, hn::Set(du, U(2 * layout::least_normal))),
-                    hn::Set(du, U((layout::exponent_field << significand_bits) - 2 * layout::least_normal)));
-  const auto moves_back = hn::And(above_least_binade, is_normal(hn::Sub(s_magnitude, offset)));
-  const lane_mask<D> answered{hn::Or(hn::And(answerable.m, hn::RebindMask(d, hn::Or(unmoved, moves_back))), free_flight.m)};
-  a.s = hn::IfThenElse(free_flight.m, hn::Neg(u), hn::IfThenElse(hn::RebindMask(d, unmoved), a.s.v, hn::BitCast(d, hn::Sub(s_bits, offset))));
-  a.which = hn::IfThenElse(free_flight.m, one, a.which);
-  store(d, a, s_out + i, which_out + i);
-
-  if (hn::AllTrue(d, answered.m)) return 0;
-  std::uint8_t answered_bits[16] = {};  // one bit per lane
-  hn::StoreMaskBits(d, answered.m, answered_bits);
-  std::ptrdiff_t left = 0;
-  for (std::size_t j = 0; j < hn::Lanes(d); ++j)
-    if (!((answered_bits[j / 8] >> (j % 8)) & 1)) {
-      solve_stable_lane(u_in[i + j], dy_in[i + j], phi_in[i + j], s_out[i + j], which_out[i + j]);
-      ++left;
-    }
-  return left;
-}
-
-// Returns how many lanes it left to solve_stable.
-template <class D>
-HWY_INLINE std::ptrdiff_t solve_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
-                             hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i) {
-  using T = hn::TFromD<D>;
-  using U = typename detail::binary_layout<T>::bits;
-  const hn::RebindToUnsigned<D> du;
-  const auto u = hn::LoadU(d, u_in + i), dy = hn::LoadU(d, dy_in + i), phi = hn::LoadU(d, phi_in + i);
   // the common window (detail::common_window_offsets): the OR of the offsets
   // of |u|, |dy| and phi from the window's lower ends lies below its width
   // (a negative phi, zeros, subnormals, infinity and NaN fail it)
-  const auto magnitude = hn::Set(du, U(~detail::binary_layout<T>::sign));
   const auto lowest_uv = hn::Set(du, detail::common_window_lowest_uv<T>);
-  const auto offsets = hn::Or(hn::Or(hn::Sub(hn::And(hn::BitCast(du, u), magnitude), lowest_uv),
-                                     hn::Sub(hn::And(hn::BitCast(du, dy), magnitude), lowest_uv)),
-                              hn::Sub(hn::BitCast(du, phi), hn::Set(du, detail::common_window_lowest_phi<T>)));
-  const auto inside = hn::RebindMask(d, unsigned_less(du, offsets, hn::Set(du, detail::common_window_width<T>)));
-  if (hn::AllTrue(d, inside)) [[likely]] {
-    store(d, answer_cases(d, lanes<D>(u), lanes<D>(dy), lanes<D>(phi), lane_mask<D>{inside}), s_out + i, which_out + i);
-    return 0;
+  const auto window_offsets = hn::Or(hn::Or(hn::Sub(abs_u, lowest_uv), hn::Sub(abs_dy, lowest_uv)),
+                                     hn::Sub(phi_bits, hn::Set(du, detail::common_window_lowest_phi<T>)));
+  const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
+
+  L moved_u = u, moved_dy = dy, moved_phi = phi;
+  auto offset = hn::Zero(du);
+  lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)};
+  if (!hn::AllTrue(d, inside)) [[unlikely]] {
+    // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
+    const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
+    free_flight.m = hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
+                                    hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
+                            hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)));
+    // phi's band: the shift (in binades) that moves the larger of |u|, |dy| to
+    // the band's top, taken where u and dy are normal, phi in a band, and the
+    // smaller then at or above the band's least binade for its case
+    const auto least_normal = hn::Set(du, layout::least_normal);
+    const auto normal_span = hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal));
+    auto is_normal = [&](hn::Vec<decltype(du)> magnitude_bits) {
+      return unsigned_less(du, hn::Sub(magnitude_bits, least_normal), normal_span);
+    };
+    auto field_of = [&](hn::Vec<decltype(du)> magnitude_bits) {
+      return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
+    };
+    const auto u_field = field_of(abs_u), dy_field = field_of(abs_dy);
+    const auto larger = hn::Max(u_field, dy_field), smaller = hn::Min(u_field, dy_field);
+    const auto band = hn::ShiftRight<fields::bands::band_bits>(
+        hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
+    const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))),
+                                      hn::GatherIndex(di, fields::impact_lowest.data(), band),
+                                      hn::GatherIndex(di, fields::lowest.data(), band));
+    const auto shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
+    const auto phi_in_a_band = unsigned_less(
+        du, hn::Sub(phi_bits, least_normal), hn::Set(du, U(std::bit_cast<U>(fields::bands::end) - layout::least_normal)));
+    const auto fits = hn::AndNot(hn::RebindMask(di, inside),
+                                 hn::And(hn::RebindMask(di, hn::And(hn::And(is_normal(abs_u), is_normal(abs_dy)), phi_in_a_band)),
+                                         hn::Not(hn::Lt(hn::Add(smaller, shift), least))));
+    answerable.m = hn::Or(inside, hn::RebindMask(d, fits));
+    offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, shift)));
+    // the lanes that cannot be answered solve 1 = 1 = 1: no subnormal operand or result
+    const auto one = hn::Set(d, T(1));
+    moved_u = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(u_bits, offset)), one);
+    moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
+    moved_phi = hn::IfThenElse(answerable.m, phi, one);
   }
-  return solve_moved(d, u_in, dy_in, phi_in, s_out, which_out, i, inside);
+
+  // (A.21)'s decision, as solve_cases takes it: the pre-test, and the exact
+  // sum for the lanes it leaves undecided near the boundary
+  const auto contact_before = moved_dy > L(0);
+  const L sum = moved_u + moved_dy;
+  const auto [estimate, margin] = detail::estimate_contact(sum, moved_phi, moved_dy);
+  const auto decided = fabs(estimate) > margin;
+  auto stays = estimate > L(0);
+  if (!hn::AllFalse(d, (answerable & contact_before & !decided).m)) [[unlikely]]
+    stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(moved_u, moved_dy, moved_phi));
+
+  // (A.29): s = -u, written now, and every lane's case; the second pass
+  // writes the other lanes' s, solve_stable the lanes it solves
+  free_flight = free_flight | (answerable & !contact_before & (sum <= L(0)));
+  const auto is_contact = answerable & contact_before & stays;
+  hn::StoreU(hn::Neg(u), d, s_out + i);
+  const auto which = hn::IfThenElse(free_flight.m, hn::Set(d, T(contact_case::free)),
+                                    hn::IfThenElse(contact_before.m,
+                                                   hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
+                                                                  hn::Set(d, T(contact_case::release))),
+                                                   hn::Set(d, T(contact_case::impact))));
+  if constexpr (sizeof(T) == 8) {
+    const hn::Rebind<std::int32_t, D> di32;
+    hn::StoreU(hn::DemoteTo(di32, which), di32, which_out + i);
+  } else {
+    hn::StoreU(hn::ConvertTo(di, which), di, which_out + i);
+  }
+  const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
+  pack(d, contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  pack(d, roots, (answerable & !free_flight & !is_contact).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  if (!hn::AllTrue(d, inside)) [[unlikely]] {
+    roots.moved = contacts.moved = true;
+    pack(d, scalar, (!(answerable | free_flight)).m, u, dy, phi, offset, index);
+  }
 }
 
 template <class T>
 std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
   std::ptrdiff_t i = 0, left = 0;
 #if HWY_NATIVE_FMA
-  const hn::ScalableTag<T> d;
+  using D = hn::ScalableTag<T>;
+  const D d;
   const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
-  for (; i + width <= n; i += width) left += solve_vector(d, u, dy, phi, s, which, i);
+  packed_lanes<T> roots, contacts, scalar;
+  while (i + width <= n) {
+    const std::ptrdiff_t end = std::min(n - n % width, i + block);
+    for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, roots, contacts, scalar);
+    left += solve_packed(d, roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D>(x...); });
+    left += solve_packed(d, contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D>(x...); });
+    for (std::ptrdiff_t k = 0; k < scalar.count; ++k) {
+      const auto lane = static_cast<std::ptrdiff_t>(scalar.index[k]);
+      solve_stable_lane(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
+    }
+    left += scalar.count;
+    scalar.count = 0;
+  }
 #endif
   // the last lanes (and every lane where the vectors' multiply-add would round twice)
   return left + solve_stable_lanes(u + i, dy + i, phi + i, s + i, which + i, n - i);
