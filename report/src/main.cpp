@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "candidates.hpp"
+#include "contact/batch.hpp"
 #include "contact/harness/candidate.hpp"
 #include "measure.hpp"
 #include "output.hpp"
@@ -35,7 +36,7 @@ std::string cpu_model() {
       const auto colon = line.find(':');
       if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
     }
-  return "an unknown CPU";
+  return "unknown";
 }
 
 std::string now_utc() {
@@ -139,6 +140,8 @@ int main(int argc, char** argv) {
   info.cpu = cpu_model();
   info.compiler = CONTACT_COMPILER;
   info.flags = CONTACT_REPORT_FLAGS;
+  for (const contact::batch_target& t : contact::batch_targets()) info.batch_targets.emplace_back(t.name, t.supported);
+  info.batch_chosen = contact::chosen_batch_target().name;
   const auto start = std::chrono::steady_clock::now();
   std::vector<report::scene_result> results;
   report::measure_options options;

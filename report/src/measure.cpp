@@ -16,6 +16,7 @@
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
 #include "candidates.hpp"
+#include "targets.hpp"
 #include "type_ops.hpp"
 
 namespace report {
@@ -82,9 +83,6 @@ struct stream_arrays {
   contact::batch_array<int> which;
 };
 
-// The paths the throughput compares, in the order of its tables.
-constexpr const char* throughput_paths[] = {"floor", "batch", "stable", "textbook"};
-
 using lane_path = std::function<void(stream_arrays&, std::size_t)>;
 
 // The memory floor: the same bytes in and out, and no solving.
@@ -102,6 +100,26 @@ void memory_floor(stream_arrays& a, std::size_t n) {
 
 // The batch kernel over the arrays.
 void batch_kernel(stream_arrays& a, std::size_t) { contact::solve_batch(a.u, a.dy, a.phi, a.s, a.which); }
+
+// One target's batch kernel alone over the arrays.
+lane_path target_kernel(const contact::batch_target& t) {
+  return [&t](stream_arrays& a, std::size_t n) {
+    solve_on(t, a.u.data(), a.dy.data(), a.phi.data(), a.s.data(), a.which.data(), static_cast<std::ptrdiff_t>(n));
+  };
+}
+
+// A path over the arrays, under the name of its rows.
+struct named_path {
+  std::string what;
+  lane_path body;
+};
+
+// The batch kernels: "batch" (the target dispatch chose), then each target the CPU runs alone.
+std::vector<named_path> batch_kernels() {
+  std::vector<named_path> kernels{{name_of(method::batch), batch_kernel}};
+  for (const contact::batch_target* t : supported_batch_targets()) kernels.push_back({batch_row_name(*t), target_kernel(*t)});
+  return kernels;
+}
 
 // One round of `body` over the arrays, as a Google Benchmark of min_time seconds.
 void register_round(const std::string& name, const std::shared_ptr<stream_arrays>& d, const lane_path& body,
@@ -126,21 +144,25 @@ lane_path each_lane(Solve solve) {
   };
 }
 
-void register_throughput(const std::shared_ptr<stream_arrays>& d, const throughput& t, const std::string& prefix,
-                         collector& c) {
+// The paths the throughput compares, in the order of its tables: the floor,
+// the batch kernels, the scalar paths.
+std::vector<named_path> throughput_paths() {
+  std::vector<named_path> paths{{"floor", memory_floor}};
+  for (auto& kernel : batch_kernels()) paths.push_back(std::move(kernel));
+  paths.push_back({"stable", each_lane([](double u, double dy, double phi) { return contact::solve_stable(u, dy, phi); })});
+  paths.push_back(
+      {"textbook", each_lane([](double u, double dy, double phi) { return contact::solve_textbook(u, dy, phi); })});
+  return paths;
+}
+
+void register_throughput(const std::shared_ptr<stream_arrays>& d, const std::vector<named_path>& paths,
+                         const throughput& t, const std::string& prefix, collector& c) {
   const std::size_t n = d->u.size();
-  const lane_path paths[] = {
-      memory_floor,
-      batch_kernel,
-      each_lane([](double u, double dy, double phi) { return contact::solve_stable(u, dy, phi); }),
-      each_lane([](double u, double dy, double phi) { return contact::solve_textbook(u, dy, phi); }),
-  };
-  static_assert(std::size(paths) == std::size(throughput_paths));
-  for (const char* what : throughput_paths) c.items_per_iteration[prefix + what] = static_cast<long>(n);
+  for (const auto& path : paths) c.items_per_iteration[prefix + path.what] = static_cast<long>(n);
   // Repetition-major, as in typed.hpp: each round times every path once.
   for (int round = 0; round < t.repetitions; ++round)
-    for (std::size_t k = 0; k < std::size(paths); ++k)
-      register_round(prefix + throughput_paths[k] + "#" + std::to_string(round), d, paths[k], t.min_time);
+    for (const auto& path : paths)
+      register_round(prefix + path.what + "#" + std::to_string(round), d, path.body, t.min_time);
 }
 
 std::shared_ptr<stream_arrays> stream_data(const std::vector<input>& lanes) {
@@ -217,7 +239,7 @@ void measure_accuracy(const scene& s, const std::vector<input>& inputs, const me
   }
 }
 
-// One Google Benchmark per (run, type, method), over a shuffled array of the scene's inputs.
+// One Google Benchmark per (run, type, row: a method or a batch target), over a shuffled array of the scene's inputs.
 void measure_timings(const scene& s, const std::vector<input>& inputs, scene_result& result) {
   collector c;
   std::vector<std::pair<std::string, timing_result>> registered;
@@ -231,13 +253,12 @@ void measure_timings(const scene& s, const std::vector<input>& inputs, scene_res
     if (std::find(r.types.begin(), r.types.end(), "double") != r.types.end())
       time_candidates(r, lanes, result.timing);
     for (const auto& type : r.types) {
-      ops_for(type).register_timings(r, lanes, prefix);
-      for (method m : r.methods) {
-        const std::string name = prefix + type + "|" + name_of(m);
+      for (const std::string& row : ops_for(type).register_timings(r, lanes, prefix)) {
+        const std::string name = prefix + type + "|" + row;
         c.items_per_iteration[name] = static_cast<long>(lanes.size());
         timing_result t;
         t.type = type;
-        t.algorithm = name_of(m);
+        t.algorithm = row;
         t.inputs = static_cast<long>(lanes.size());
         registered.emplace_back(name, t);
       }
@@ -255,18 +276,19 @@ void measure_timings(const scene& s, const std::vector<input>& inputs, scene_res
 // Batch throughput against the scalar paths and the memory floor, streamed and in cache.
 void measure_throughput(const scene& s, const std::vector<input>& inputs, scene_result& result) {
   const throughput& t = *s.batch_throughput;
+  const std::vector<named_path> paths = throughput_paths();
   for (int pass = 0; pass < 2; ++pass) {
     const long lanes = pass == 0 ? t.lanes : t.cache_lanes;
     collector c;
     const std::string prefix = s.name + "|throughput|" + std::to_string(lanes) + "|";
     auto data = stream_data(mixed(inputs, lanes, s.seed + 1000 + static_cast<std::uint64_t>(pass)));
-    register_throughput(data, t, prefix, c);
+    register_throughput(data, paths, t, prefix, c);
     run_benchmarks(c);
-    for (const char* what : throughput_paths) {
+    for (const auto& path : paths) {
       throughput_result row;
-      row.what = what;
+      row.what = path.what;
       row.lanes = lanes;
-      row.ns = c.ns[prefix + what];
+      row.ns = c.ns[prefix + path.what];
       spread(row.ns, row.median, row.min, row.max);
       row.gigabytes_per_second = bytes_per_lane / row.median;
       (pass == 0 ? result.throughput : result.throughput_cache).push_back(row);
@@ -300,28 +322,41 @@ void measure_batch_across_scenes(std::vector<scene_result>& results) {
     }
   if (!reference) return;
   const run& rounds = *batch_timing_run(reference->s);  // its repetitions and min_time
+  const std::vector<named_path> kernels = batch_kernels();
   collector c;
-  auto name_of_scene = [](const scene_result& r) { return "batch across scenes|" + r.s.name; };
+  auto name_of_timing = [](const named_path& kernel, const scene_result& r) {
+    return "batch across scenes|" + kernel.what + "|" + r.s.name;
+  };
   std::vector<std::shared_ptr<stream_arrays>> data;
   for (const auto* r : timed) {
     data.push_back(stream_data(r->batch_lanes));
-    c.items_per_iteration[name_of_scene(*r)] = static_cast<long>(r->batch_lanes.size());
+    for (const auto& kernel : kernels)
+      c.items_per_iteration[name_of_timing(kernel, *r)] = static_cast<long>(r->batch_lanes.size());
   }
   std::fprintf(stderr, "contact-report: batch across scenes, against scene %s\n", reference->s.name.c_str());
+  // each round times every kernel on every scene once
   for (int round = 0; round < rounds.repetitions; ++round)
-    for (std::size_t k = 0; k < timed.size(); ++k)
-      register_round(name_of_scene(*timed[k]) + "#" + std::to_string(round), data[k], batch_kernel, rounds.min_time);
+    for (const auto& kernel : kernels)
+      for (std::size_t k = 0; k < timed.size(); ++k)
+        register_round(name_of_timing(kernel, *timed[k]) + "#" + std::to_string(round), data[k], kernel.body,
+                       rounds.min_time);
   run_benchmarks(c);
-  const std::vector<double>& reference_ns = c.ns[name_of_scene(*reference)];
-  for (auto* r : timed) {
-    batch_across_result b;
-    b.reference = reference->s.name;
-    b.ns = c.ns[name_of_scene(*r)];
-    spread(b.ns, b.median, b.min, b.max);
-    for (std::size_t round = 0; round < std::min(b.ns.size(), reference_ns.size()); ++round)
-      b.ratios.push_back(b.ns[round] / reference_ns[round]);
-    spread(b.ratios, b.ratio_median, b.ratio_min, b.ratio_max);
-    r->batch_across = std::move(b);
+  for (const auto& kernel : kernels) {
+    const std::vector<double>& reference_ns = c.ns[name_of_timing(kernel, *reference)];
+    for (auto* r : timed) {
+      batch_across_result b;
+      b.kernel = kernel.what;
+      b.reference = reference->s.name;
+      b.ns = c.ns[name_of_timing(kernel, *r)];
+      spread(b.ns, b.median, b.min, b.max);
+      for (std::size_t round = 0; round < std::min(b.ns.size(), reference_ns.size()); ++round)
+        b.ratios.push_back(b.ns[round] / reference_ns[round]);
+      spread(b.ratios, b.ratio_median, b.ratio_min, b.ratio_max);
+      if (kernel.what == name_of(method::batch))
+        r->batch_across = std::move(b);
+      else
+        r->batch_across_targets.push_back(std::move(b));
+    }
   }
 }
 

@@ -11,9 +11,10 @@ struct measure_options {
 
 scene_result measure(const scene& s, const measure_options& options);
 
-// Times the batch kernel on the timing inputs of every measured scene that
-// times it in double, all in the same rounds, and compares each round with
-// the reference scene's (batch_reference); nothing without a reference.
+// Times the batch kernels (batch, and each target the CPU runs alone) on the
+// timing inputs of every measured scene that times batch in double, all in
+// the same rounds, and compares each round with the same kernel's on the
+// reference scene (batch_reference); nothing without a reference.
 void measure_batch_across_scenes(std::vector<scene_result>& results);
 
 }  // namespace report

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "results.hpp"
@@ -12,7 +13,12 @@ struct run_info {
   std::string command;     // the command line
   std::string started;     // UTC, ISO 8601
   double seconds = 0;      // wall time of all scenes
-  std::string cpu, compiler, flags;
+  std::string cpu;         // the model name of /proc/cpuinfo, or "unknown"
+  std::string compiler, flags;
+  // the batch targets the library holds (contact::batch_targets()), whether
+  // this CPU runs each, and the one solve_batch dispatches to
+  std::vector<std::pair<std::string, bool>> batch_targets;
+  std::string batch_chosen;
 };
 
 // The number formats of report.md (the tests use them to compare figures).

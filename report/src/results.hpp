@@ -53,7 +53,7 @@ struct accuracy_result {
 void count_iterations(const std::vector<int>& counts, accuracy_result& a);
 
 struct timing_result {
-  std::string type, algorithm;
+  std::string type, algorithm;  // algorithm: a method's name, or "batch[NAME]": one target's kernel alone
   long inputs = 0;  // length of the array one iteration solves
   std::vector<double> ns;  // ns per solve, one per repetition (CPU time)
   double median = 0, min = 0, max = 0;
@@ -63,7 +63,7 @@ struct timing_result {
 inline constexpr long bytes_per_lane = 4 * sizeof(double) + sizeof(int);
 
 struct throughput_result {
-  std::string what;  // floor, batch, stable, textbook
+  std::string what;  // floor, batch, batch[NAME] (one per target the CPU runs), stable, textbook
   long lanes = 0;
   std::vector<double> ns;  // ns per lane, one per repetition (CPU time)
   double median = 0, min = 0, max = 0;
@@ -75,6 +75,7 @@ struct throughput_result {
 // minute after another can meet another load of the shared machine, a round
 // meets the same load on every scene.
 struct batch_across_result {
+  std::string kernel;          // "batch" (the target dispatch chose) or "batch[NAME]" (targets.hpp)
   std::string reference;       // the scene that sets batch_reference
   std::vector<double> ns;      // ns per lane, one per round (CPU time)
   double median = 0, min = 0, max = 0;
@@ -106,6 +107,7 @@ struct scene_result {
   std::vector<throughput_result> throughput_cache;  // the same at cache_lanes
   std::vector<input> batch_lanes;  // the inputs its batch timing in double loops over (none: no such timing)
   std::optional<batch_across_result> batch_across;
+  std::vector<batch_across_result> batch_across_targets;  // the same per target the CPU runs, timed in the same rounds
   std::vector<energy_result> energy;
   double seconds = 0;
 };

@@ -26,8 +26,9 @@ struct type_ops {
   // against `references`, the certified roots of the same inputs.
   void (*accuracy)(const run& r, const std::vector<input>& inputs, const reference_list& references,
                    std::size_t families, bool keep_raw, progress& bar, std::vector<accuracy_result>& out);
-  // Registers one Google Benchmark per method and round, named "<prefix><type>|<method>#<round>".
-  void (*register_timings)(const run& r, const std::vector<input>& lanes, const std::string& prefix);
+  // Registers one Google Benchmark per row and round, named "<prefix><type>|<row>#<round>", and
+  // returns the rows: the run's methods and, after batch, "batch[NAME]" per target the CPU runs.
+  std::vector<std::string> (*register_timings)(const run& r, const std::vector<input>& lanes, const std::string& prefix);
   energy_result (*simulate)(const oscillator& o, method m);
 };
 

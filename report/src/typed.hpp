@@ -22,6 +22,7 @@
 #include "iterative_peers.hpp"
 #include "peers.hpp"
 #include "results.hpp"
+#include "targets.hpp"
 #include "type_ops.hpp"
 
 namespace report::typed {
@@ -228,8 +229,29 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
 
 // ---- timing ------------------------------------------------------------------------
 
+// A row of a scene's timings: a method, or one target's batch kernel alone.
+struct timed_row {
+  std::string name;  // name_of(m), or batch_row_name(*target)
+  method m;
+  const contact::batch_target* target = nullptr;
+};
+
+// The rows a run times in T: each method of the run and, after batch in float
+// and double, each target's kernel that this CPU runs (targets.hpp).
 template <class T>
-void register_timings(const run& r, const std::vector<input>& lanes, const std::string& prefix) {
+std::vector<timed_row> timed_rows(const run& r) {
+  std::vector<timed_row> rows;
+  for (method m : r.methods) {
+    rows.push_back({name_of(m), m});
+    if constexpr (has_batch_kernels<T>)
+      if (m == method::batch)
+        for (const contact::batch_target* t : supported_batch_targets()) rows.push_back({batch_row_name(*t), m, t});
+  }
+  return rows;
+}
+
+template <class T>
+std::vector<std::string> register_timings(const run& r, const std::vector<input>& lanes, const std::string& prefix) {
   struct arrays {  // aligned to the vector width, as Eigen arrays are
     std::vector<T, Eigen::aligned_allocator<T>> u, dy, phi, s;
     std::vector<int, Eigen::aligned_allocator<int>> which;
@@ -243,23 +265,33 @@ void register_timings(const run& r, const std::vector<input>& lanes, const std::
   }
   data->s.resize(n);
   data->which.resize(n);
-  // Repetition-major: round k times every method once, so that a change of the
-  // machine's load during the run hits all methods alike. "#k" ends the name.
+  // the batch API: the whole array in one call of `solve`
+  const auto whole_array = [data, n](const std::string& name, auto solve) {
+    return benchmark::RegisterBenchmark(name.c_str(), [data, n, solve](benchmark::State& state) {
+      for (auto _ : state) {
+        solve(data->u.data(), data->dy.data(), data->phi.data(), data->s.data(), data->which.data(),
+              static_cast<std::ptrdiff_t>(n));
+        benchmark::ClobberMemory();
+      }
+    });
+  };
+  const std::vector<timed_row> rows = timed_rows<T>(r);
+  // Repetition-major: round k times every row once, so that a change of the
+  // machine's load during the run hits all rows alike. "#k" ends the name.
   for (int round = 0; round < r.repetitions; ++round)
-    for (method m : r.methods) {
-      const std::string name =
-          prefix + std::string(contact::type_name<T>) + "|" + name_of(m) + "#" + std::to_string(round);
-      benchmark::internal::Benchmark* b;
-      if (m == method::batch) {
-        b = benchmark::RegisterBenchmark(name.c_str(), [data, n](benchmark::State& state) {
-          for (auto _ : state) {
-            contact::solve_batch(data->u.data(), data->dy.data(), data->phi.data(), data->s.data(), data->which.data(),
-                                 static_cast<std::ptrdiff_t>(n));
-            benchmark::ClobberMemory();
-          }
+    for (const timed_row& row : rows) {
+      const std::string name = prefix + std::string(contact::type_name<T>) + "|" + row.name + "#" + std::to_string(round);
+      benchmark::internal::Benchmark* b = nullptr;
+      if (row.target) {
+        if constexpr (has_batch_kernels<T>)
+          b = whole_array(name, [t = row.target](const T* u, const T* dy, const T* phi, T* s, int* which,
+                                                 std::ptrdiff_t count) { solve_on(*t, u, dy, phi, s, which, count); });
+      } else if (row.m == method::batch) {
+        b = whole_array(name, [](const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t count) {
+          contact::solve_batch(u, dy, phi, s, which, count);
         });
       } else {
-        b = benchmark::RegisterBenchmark(name.c_str(), [data, n, m](benchmark::State& state) {
+        b = benchmark::RegisterBenchmark(name.c_str(), [data, n, m = row.m](benchmark::State& state) {
           for (auto _ : state) {
             for (std::size_t i = 0; i < n; ++i) {
               auto result = solve_one(m, data->u[i], data->dy[i], data->phi[i]);
@@ -270,6 +302,9 @@ void register_timings(const run& r, const std::vector<input>& lanes, const std::
       }
       b->Repetitions(1)->MinTime(r.min_time)->MinWarmUpTime(r.min_time / 2)->Unit(benchmark::kNanosecond);
     }
+  std::vector<std::string> names;
+  for (const timed_row& row : rows) names.push_back(row.name);
+  return names;
 }
 
 // ---- energy ------------------------------------------------------------------------

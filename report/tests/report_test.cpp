@@ -1,9 +1,11 @@
 // The report tool end to end: it runs a small scene with --raw, and every
 // figure of report.md's tables and of results.csv must be what the raw
 // measurements give; the raw measurements themselves are checked against an
-// independent solve and the certified reference. A bad scene file stops the
-// tool with "FILE:LINE: reason"; a scene that asks for double alone gets no
-// other type.
+// independent solve and the certified reference. Wherever batch is timed, each
+// batch target the CPU supports is timed alone (batch[NAME]), and the header
+// names the CPU, the targets and the one dispatch chose. A bad scene file
+// stops the tool with "FILE:LINE: reason"; a scene that asks for double alone
+// gets no other type.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -233,6 +235,43 @@ std::set<std::string> measured_in_small_scene() {
   return out;
 }
 
+// The rows that time each batch target this CPU supports alone, "batch[NAME]",
+// in the library's order.
+std::vector<std::string> target_rows() {
+  std::vector<std::string> rows;
+  for (const contact::batch_target& t : contact::batch_targets())
+    if (t.supported) rows.push_back(std::string("batch[") + t.name + "]");
+  return rows;
+}
+
+// The (type, algorithm) pairs the small scene times: those it measures and,
+// beside batch in double, each supported target.
+std::set<std::string> timed_in_small_scene() {
+  std::set<std::string> out = measured_in_small_scene();
+  for (const auto& row : target_rows()) out.insert("double/" + row);
+  return out;
+}
+
+// results.csv as "check/type/algorithm/metric" -> value.
+std::map<std::string, std::string> csv_figures(const fs::path& p) {
+  std::ifstream csv(p);
+  std::map<std::string, std::string> figures;
+  for (std::string line; std::getline(csv, line);) {
+    const auto c = split(line, ',');
+    if (c.size() == 6) figures[c[1] + "/" + c[2] + "/" + c[3] + "/" + c[4]] = c[5];
+  }
+  return figures;
+}
+
+// The model name of /proc/cpuinfo, or "unknown".
+std::string cpu_model_name() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos)
+      return trim(line.substr(line.find(':') + 1));
+  return "unknown";
+}
+
 bool is_iterative(const std::string& algorithm) {
   const auto m = report::method_named(algorithm);
   return m && report::iterative(*m);
@@ -279,11 +318,13 @@ TEST_F(tool, runs_and_writes_every_output) {
 
 TEST_F(tool, only_what_the_scene_names_is_measured) {
   ASSERT_EQ(status_, 0) << stderr_;
-  std::set<std::string> seen;
+  std::set<std::string> seen, timed;
   for (const auto& a : scene()["accuracy"]) seen.insert(a["type"].get<std::string>() + "/" + a["algorithm"].get<std::string>());
+  for (const auto& t : scene()["timing"]) timed.insert(t["type"].get<std::string>() + "/" + t["algorithm"].get<std::string>());
   const std::set<std::string> expected = measured_in_small_scene();
   EXPECT_EQ(seen, expected);
-  EXPECT_EQ(scene()["timing"].size(), expected.size());
+  EXPECT_EQ(timed, timed_in_small_scene());  // the batch[NAME] rows are timed only
+  EXPECT_EQ(scene()["timing"].size(), timed_in_small_scene().size());
   EXPECT_EQ(scene()["energy"].size(), 4u);
 }
 
@@ -292,7 +333,7 @@ TEST_F(tool, only_what_the_scene_names_is_measured) {
 TEST_F(tool, accuracy_figures_come_from_the_raw_samples) {
   ASSERT_EQ(status_, 0) << stderr_;
   const auto rows = table(markdown_, "| type | algorithm | samples |");
-  ASSERT_EQ(rows.size(), measured_in_small_scene().size());
+  ASSERT_EQ(rows.size(), timed_in_small_scene().size());
   for (const auto& a : scene()["accuracy"]) {
     const std::string type = a["type"], algorithm = a["algorithm"];
     SCOPED_TRACE(type + " " + algorithm);
@@ -473,7 +514,7 @@ TEST_F(tool, headline_csv_throughput_and_energy_agree_with_the_measurements) {
     EXPECT_DOUBLE_EQ(reps[1], value_of(t["ns_median"]));
     if (t["lanes"] == 8192) streamed[t["path"]] = reps[1];
   }
-  ASSERT_EQ(streamed.size(), 4u);
+  ASSERT_EQ(streamed.size(), 4u + target_rows().size());
   const auto& batch = results_["headline"]["batch"]["streamed"];
   EXPECT_DOUBLE_EQ(value_of(batch["speedup_over_textbook"]), streamed["textbook"] / streamed["batch"]);
   EXPECT_DOUBLE_EQ(value_of(batch["batch_to_floor"]), streamed["batch"] / streamed["floor"]);
@@ -583,6 +624,183 @@ TEST_F(tool, the_iterative_peers_give_finite_errors_on_physical_inputs) {
   }
 }
 
+// ---- the batch targets: each kernel the CPU runs, timed alone as batch[NAME] ----
+
+TEST_F(tool, the_library_holds_a_scalar_target_that_every_cpu_supports) {
+  ASSERT_FALSE(target_rows().empty());
+  EXPECT_EQ(target_rows().back(), "batch[scalar]");
+}
+
+TEST_F(tool, results_json_times_batch_on_each_supported_target_in_double) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  for (const auto& row : target_rows()) {
+    SCOPED_TRACE(row);
+    long found = 0;
+    for (const auto& t : scene()["timing"])
+      if (t["type"] == "double" && t["algorithm"] == row) {
+        ++found;
+        EXPECT_GT(value_of(t["ns_median"]), 0);
+        EXPECT_EQ(t["inputs"].get<long>(), 256);
+      }
+    EXPECT_EQ(found, 1);
+  }
+}
+
+TEST_F(tool, results_csv_times_batch_on_each_supported_target_in_double) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto figures = csv_figures(work / "out" / "results.csv");
+  for (const auto& row : target_rows()) {
+    SCOPED_TRACE(row);
+    ASSERT_EQ(figures.count("timing/double/" + row + "/ns_median"), 1u);
+    EXPECT_GT(std::strtod(figures.at("timing/double/" + row + "/ns_median").c_str(), nullptr), 0);
+    EXPECT_EQ(figures.at("timing/double/" + row + "/inputs"), "256");
+  }
+}
+
+TEST_F(tool, no_target_the_cpu_does_not_support_is_timed) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  for (const contact::batch_target& t : contact::batch_targets()) {
+    if (t.supported) continue;
+    const std::string row = std::string("batch[") + t.name + "]";
+    EXPECT_EQ(markdown_.find(row), std::string::npos) << row;
+    EXPECT_EQ(read(work / "out" / "results.csv").find(row), std::string::npos) << row;
+  }
+}
+
+TEST_F(tool, the_scene_table_gives_each_target_s_row_after_batch_in_the_library_s_order) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto rows = table(markdown_, "| type | algorithm | samples |");
+  const auto batch = std::find_if(rows.begin(), rows.end(),
+                                  [](const auto& row) { return row[0] == "double" && row[1] == "batch"; });
+  ASSERT_NE(batch, rows.end());
+  const auto targets = target_rows();
+  ASSERT_GE(static_cast<std::size_t>(rows.end() - batch), 1 + targets.size());
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const auto& row = *(batch + 1 + static_cast<std::ptrdiff_t>(k));
+    EXPECT_EQ(row[0], "double");
+    EXPECT_EQ(row[1], targets[k]);
+    EXPECT_EQ(row[2], "—");  // no accuracy figures: every target gives batch's results bit for bit
+  }
+}
+
+TEST_F(tool, the_headline_speed_table_gives_each_target_in_double) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto rows = table(markdown_.substr(markdown_.find("### Speed in double")), "| algorithm | small |");
+  for (const auto& target : target_rows()) {
+    SCOPED_TRACE(target);
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r[0] == target; });
+    ASSERT_NE(row, rows.end());
+    for (const auto& t : scene()["timing"])
+      if (t["type"] == "double" && t["algorithm"] == target) {
+        EXPECT_EQ((*row)[1], report::format_ns(value_of(t["ns_median"])));
+        EXPECT_EQ(value_of(results_["headline"]["double_ns_per_solve"][target]["small"]), value_of(t["ns_median"]));
+      }
+  }
+}
+
+TEST_F(tool, the_throughput_gives_each_target_streamed_and_in_cache_with_its_ratios) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto figures = csv_figures(work / "out" / "results.csv");
+  for (const long lanes : {8192L, 1024L}) {
+    std::map<std::string, double> ns;
+    for (const auto& t : scene()["throughput"])
+      if (t["lanes"] == lanes) ns[t["path"]] = value_of(t["ns_median"]);
+    const char* pass = lanes == 8192 ? "streamed" : "in_cache";
+    for (const auto& row : target_rows()) {
+      SCOPED_TRACE(row + " " + pass);
+      ASSERT_EQ(ns.count(row), 1u);
+      EXPECT_EQ(figures.count("throughput@" + std::to_string(lanes) + "/double/" + row + "/ns_median"), 1u);
+      const json& headline = results_["headline"]["batch_per_target"][row][pass];
+      EXPECT_DOUBLE_EQ(value_of(headline["batch_ns"]), ns[row]);
+      EXPECT_DOUBLE_EQ(value_of(headline["batch_to_floor"]), ns[row] / ns["floor"]);
+      EXPECT_DOUBLE_EQ(value_of(headline["speedup_over_textbook"]), ns["textbook"] / ns[row]);
+    }
+  }
+}
+
+TEST_F(tool, the_headline_throughput_table_has_a_row_per_target_streamed_and_in_cache) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto rows = table(markdown_, "| lanes | kernel |");
+  for (const auto& target : target_rows())
+    for (const char* lanes : {"8192 (streamed)", "1024 (in cache)"}) {
+      SCOPED_TRACE(target + " " + lanes);
+      const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r[0] == lanes && r[1] == target; });
+      ASSERT_NE(row, rows.end());
+      const json& headline = results_["headline"]["batch_per_target"][target][lanes[0] == '8' ? "streamed" : "in_cache"];
+      EXPECT_EQ((*row)[6], "**" + report::format_ratio(value_of(headline["speedup_over_textbook"])) + "**");
+      EXPECT_EQ((*row)[8], "**" + report::format_ratio(value_of(headline["batch_to_floor"])) + "**");
+    }
+}
+
+TEST_F(tool, report_md_names_the_target_dispatch_chose) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string header = markdown_.substr(0, markdown_.find("## Headline figures"));
+  EXPECT_NE(header.find(std::string("dispatch chose: **") + contact::chosen_batch_target().name + "**"),
+            std::string::npos)
+      << header;
+}
+
+TEST_F(tool, the_header_names_the_cpu_model) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string header = markdown_.substr(0, markdown_.find("## Headline figures"));
+  EXPECT_NE(header.find("- **CPU:** " + cpu_model_name() + "\n"), std::string::npos) << header;
+}
+
+TEST_F(tool, the_header_names_the_targets_the_library_holds_and_those_the_cpu_supports) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  std::string held, supported;
+  for (const contact::batch_target& t : contact::batch_targets()) {
+    held += (held.empty() ? "" : ", ") + std::string(t.name);
+    if (t.supported) supported += (supported.empty() ? "" : ", ") + std::string(t.name);
+  }
+  const std::string header = markdown_.substr(0, markdown_.find("## Headline figures"));
+  EXPECT_NE(header.find("the library holds: " + held + "; this CPU supports: " + supported + ";"), std::string::npos)
+      << header;
+}
+
+TEST_F(tool, results_json_names_the_cpu_the_targets_and_the_chosen_one) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const json& machine = results_["machine"];
+  EXPECT_EQ(machine["cpu"], cpu_model_name());
+  EXPECT_EQ(machine["batch_chosen"], contact::chosen_batch_target().name);
+  std::vector<std::string> held, supported;
+  for (const contact::batch_target& t : contact::batch_targets()) {
+    held.emplace_back(t.name);
+    if (t.supported) supported.emplace_back(t.name);
+  }
+  EXPECT_EQ(machine["batch_targets"].get<std::vector<std::string>>(), held);
+  EXPECT_EQ(machine["batch_supported"].get<std::vector<std::string>>(), supported);
+}
+
+TEST_F(tool, batch_in_float_is_timed_per_target_too_and_wider_types_are_not) {
+  std::ofstream(work / "float.toml") << R"([scene]
+name = "float_batch"
+[[family]]
+name = "box"
+generator = "box"
+samples = 50
+u = [1e-6, 1e-3]
+dy = { log10 = [-6, -3], sign = "both" }
+phi = [1e-2, 1e4]
+[[run]]
+types = ["float", "long_double"]
+algorithms = ["batch"]
+checks = ["timing"]
+timing_inputs = 64
+repetitions = 2
+min_time = 0.002
+)";
+  const auto r = run_tool("--scene '" + (work / "float.toml").string() + "' --out '" + (work / "float-out").string() + "'",
+                          "float");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read(work / "float-out" / "results.json"));
+  std::set<std::string> timed;
+  for (const auto& t : j["scenes"][0]["timing"]) timed.insert(t["type"].get<std::string>() + "/" + t["algorithm"].get<std::string>());
+  std::set<std::string> expected{"float/batch", "long_double/batch"};
+  for (const auto& row : target_rows()) expected.insert("float/" + row);
+  EXPECT_EQ(timed, expected);
+}
+
 TEST_F(tool, a_bad_scene_file_stops_the_tool_with_file_line_and_reason) {
   const fs::path bad = work / "bad.toml";
   std::string text = small_scene;
@@ -681,6 +899,34 @@ TEST_F(tool, batch_across_scenes_gives_each_round_s_ratio_to_the_reference_scene
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[1][0], "far");
   EXPECT_EQ(rows[1][2], "**" + report::format_ratio(value_of(far["over_reference_median"])) + "**");
+}
+
+// Per target, the same: each target's kernel on each scene, over the same
+// target's time on the reference scene in the same round.
+TEST_F(tool, batch_across_scenes_gives_each_target_its_own_ratios_to_the_reference_scene) {
+  std::ofstream(work / "near.toml") << batch_scene("near", true, "{ log10 = [-6, -3], sign = \"both\" }");
+  std::ofstream(work / "far.toml") << batch_scene("far", false, "{ log2 = [-1000, 1000], sign = \"both\" }");
+  const auto r = run_on_two_scenes("near.toml", "far.toml", "across-targets");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read(work / "across-targets-out" / "results.json"));
+  const std::string csv = read(work / "across-targets-out" / "results.csv");
+  const auto rows = table(read(work / "across-targets-out" / "report.md"), "| scene | kernel | ns per lane (median) | over near");
+  for (const auto& target : target_rows()) {
+    SCOPED_TRACE(target);
+    const json& near = j["scenes"][0]["batch_across_scenes_per_target"][target];
+    const json& far = j["scenes"][1]["batch_across_scenes_per_target"][target];
+    ASSERT_EQ(near["ns_repetitions"].size(), 3u);
+    ASSERT_EQ(far["ns_repetitions"].size(), 3u);
+    for (std::size_t round = 0; round < 3; ++round) {
+      EXPECT_EQ(value_of(near["over_reference_repetitions"][round]), 1.0);
+      EXPECT_DOUBLE_EQ(value_of(far["over_reference_repetitions"][round]),
+                       value_of(far["ns_repetitions"][round]) / value_of(near["ns_repetitions"][round]));
+    }
+    EXPECT_NE(csv.find("far,batch_across_scenes,double," + target + ",over_near_median,"), std::string::npos);
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& x) { return x[0] == "far" && x[1] == target; });
+    ASSERT_NE(row, rows.end());
+    EXPECT_EQ((*row)[3], "**" + report::format_ratio(value_of(far["over_reference_median"])) + "**");
+  }
 }
 
 TEST_F(tool, two_scenes_that_set_batch_reference_are_an_error_with_file_and_line) {
