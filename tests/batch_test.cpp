@@ -276,6 +276,25 @@ void expect_band_lanes_answered_in_vectors(const lanes<T>& in) {
       EXPECT_LT(left[k], outside + in_a_box / 10) << targets[k].name << ": " << in_a_box << " of " << in.u.size() << " lanes in a band box";
 }
 
+// A subnormal phi in double (the first band): the vectors form its products
+// from normal factors, as solve_stable does, and leave no lane of audio-rate
+// u and dy to the scalar path.
+TEST(Batch, SubnormalPhiLanesEqualScalarStableInVectors) {
+  harness::seeded_source source(25);
+  using harness::distribution;
+  const distribution displacement{distribution::shape::log10, -7, -3, 0};
+  lanes<double> in;
+  for (int k = 0; k < 20000; ++k) {
+    const double phi = std::numeric_limits<double>::denorm_min() * double(source.integer(1, (1L << 52) - 1));
+    in.add(harness::random_sign(source, harness::draw<double>(source, displacement)),
+           harness::random_sign(source, harness::draw<double>(source, displacement)), phi);
+  }
+  const auto left = expect_same_as_scalar(in);
+  const auto targets = runnable_targets();
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    if (std::string(targets[k].name) != "scalar") EXPECT_EQ(left[k], 0) << targets[k].name;
+}
+
 TEST(Batch, DoubleBandLanesEqualScalarStableInVectors) { expect_band_lanes_answered_in_vectors(band_inputs<double>(23, 200)); }
 
 TEST(Batch, FloatBandLanesEqualScalarStableInVectors) { expect_band_lanes_answered_in_vectors(band_inputs<float>(24, 200)); }

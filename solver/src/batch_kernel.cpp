@@ -120,6 +120,16 @@ HWY_INLINE lanes<D> step_away_from_zero(lanes<D> x) {
   return hn::BitCast(D(), hn::Add(hn::BitCast(du, x.v), hn::Set(du, 1)));
 }
 
+// detail::subnormal_phi_factors on lanes: (phi 2^64, x 2^-64), phi 2^64 from
+// phi's bits, an integer that converts exactly
+template <class D>
+HWY_INLINE detail::normal_factors<lanes<D>> subnormal_phi_factors(lanes<D> phi, lanes<D> x) {
+  using T = hn::TFromD<D>;
+  constexpr T up = T(0x1p64), down = T(0x1p-64);
+  const lanes<D> phi_up = hn::ConvertTo(D(), hn::BitCast(hn::RebindToSigned<D>(), phi.v));
+  return {phi_up * lanes<D>(std::numeric_limits<T>::denorm_min() * up), x * lanes<D>(down), lanes<D>(down), true};
+}
+
 // a < b on unsigned lanes, as a signed comparison of a and b with their top bits flipped
 template <class DU>
 HWY_INLINE hn::Mask<DU> unsigned_less(DU du, hn::Vec<DU> a, hn::Vec<DU> b) {
@@ -189,6 +199,13 @@ inline constexpr auto compaction_orders = [] {
 }();
 
 // Appends the lanes of `lanes_of` to `into`, in order.
+// A block's lanes as the first pass sorts them: by case, and by whether phi
+// is subnormal (double: the first band), and those left to solve_stable.
+template <class T>
+struct sorted_lanes {
+  packed_lanes<T> roots, contacts, roots_of_subnormal_phi, contacts_of_subnormal_phi, scalar;
+};
+
 template <class D>
 HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, hn::Mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
                      hn::Vec<D> phi, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Vec<hn::RebindToSigned<D>> index) {
@@ -247,29 +264,32 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
 
 // (A.30) and (A.32): the impacts (dy <= 0) and the releases of `lanes`, each
 // with its square root and one division: the impact's inverse of its
-// denominator, or the release's quotient.
-template <class D>
+// denominator, or the release's quotient. With `phi_is_subnormal` the
+// products with phi are formed from normal factors, as solve_stable forms
+// them (stable_form::impact_quotient).
+template <class D, bool phi_is_subnormal>
 HWY_INLINE lanes<D> answer_roots(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   using L = lanes<D>;
   const auto impact_side = dy <= L(0);
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, fabs(dy));  // of phi |dy|
   const L sum = u + dy;                                      // impact: u - gap
-  const L phi_dy = phi * fabs(dy);                           // impact: push = phi gap; release: phi dy
+  const L phi_dy = factors.phi * factors.x;                  // impact: push = phi gap; release: phi dy
   const L term = phi_dy * select(impact_side, sum, dy);      // impact: push (u - gap); release: phi dy^2
   const L root = square_root(stable_form::discriminant(u, term));
   const auto one_plus_phi = detail::two_sum(L(1), phi);
   const auto release = stable_form::release_fraction(u, term, root);
   const L quotient = select(impact_side, L(1), release.numerator) /
                      select(impact_side, stable_form::impact_denominator(one_plus_phi), release.denominator);
-  const L push_error = fused_multiply_add(phi, fabs(dy), -phi_dy);
-  const L impact = stable_form::impact_quotient<false>(u, phi_dy, push_error, root, one_plus_phi, quotient,
-                                                       detail::factors_of<false>(phi, fabs(dy)));
+  const L push_error = fused_multiply_add(factors.phi, factors.x, -phi_dy);
+  const L impact = stable_form::impact_quotient<phi_is_subnormal>(u, phi_dy, push_error, root, one_plus_phi, quotient, factors);
   return select(impact_side, detail::impact_clamped(impact, u, dy), detail::clamped_above_positive(quotient, dy));
 }
 
 // (A.31): the contacts, one division each.
-template <class D>
+template <class D, bool phi_is_subnormal>
 HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  const auto contact = stable_form::contact_fraction(u, phi, phi, dy);
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
+  const auto contact = stable_form::contact_fraction(u, phi, factors.phi, factors.x);
   return detail::contact_clamped(lanes<D>(contact.numerator / contact.denominator), dy);
 }
 
@@ -324,8 +344,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
 // the rest are noted for solve_stable.
 template <class D>
 HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
-                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, packed_lanes<hn::TFromD<D>>& roots,
-                            packed_lanes<hn::TFromD<D>>& contacts, packed_lanes<hn::TFromD<D>>& scalar) {
+                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -348,8 +367,9 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
 
   L moved_u = u, moved_dy = dy, moved_phi = phi;
+  L phi_factor = phi, dy_factor = dy;  // phi dy as their product (detail::factors_of)
   auto offset = hn::Zero(du);
-  lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)};
+  lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
   if (!hn::AllTrue(d, inside)) [[unlikely]] {
     // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
     const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
@@ -375,8 +395,12 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
                                       hn::GatherIndex(di, fields::impact_lowest.data(), band),
                                       hn::GatherIndex(di, fields::lowest.data(), band));
     const auto shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
-    const auto phi_in_a_band = unsigned_less(
-        du, hn::Sub(phi_bits, least_normal), hn::Set(du, U(std::bit_cast<U>(fields::bands::end) - layout::least_normal)));
+    // a subnormal phi in double: every subnormal binade lies in the first band
+    // (in float they straddle two: solve_stable takes them)
+    constexpr bool subnormal_phi_in_vectors = ((-layout::bias - fields::bands::least_binade) >> fields::bands::band_bits) == 0;
+    const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
+    const auto phi_in_a_band =
+        unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
     const auto fits = hn::AndNot(hn::RebindMask(di, inside),
                                  hn::And(hn::RebindMask(di, hn::And(hn::And(is_normal(abs_u), is_normal(abs_dy)), phi_in_a_band)),
                                          hn::Not(hn::Lt(hn::Add(smaller, shift), least))));
@@ -387,15 +411,29 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     moved_u = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(u_bits, offset)), one);
     moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
     moved_phi = hn::IfThenElse(answerable.m, phi, one);
+    phi_factor = moved_phi;
+    dy_factor = moved_dy;
+    if constexpr (subnormal_phi_in_vectors) {
+      subnormal_phi = answerable & lane_mask<D>{hn::RebindMask(d, unsigned_less(du, hn::Sub(phi_bits, hn::Set(du, U(1))),
+                                                                                 hn::Sub(least_normal, hn::Set(du, U(1)))))};
+      if (!hn::AllFalse(d, subnormal_phi.m)) [[unlikely]] {
+        const auto factors = subnormal_phi_factors(moved_phi, moved_dy);
+        phi_factor = select(subnormal_phi, factors.phi, moved_phi);
+        dy_factor = select(subnormal_phi, factors.x, moved_dy);
+      }
+    }
   }
 
   // (A.21)'s decision, as solve_cases takes it: the pre-test, and the exact
   // sum for the lanes it leaves undecided near the boundary
   const auto contact_before = moved_dy > L(0);
   const L sum = moved_u + moved_dy;
-  const auto [estimate, margin] = detail::estimate_contact(sum, moved_phi, moved_dy);
+  const auto [estimate, margin] = detail::estimate_contact(sum, phi_factor, dy_factor);
   const auto decided = fabs(estimate) > margin;
   auto stays = estimate > L(0);
+  // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
+  // should it not, solve_stable takes the lane)
+  answerable = answerable & !(subnormal_phi & contact_before & !decided);
   if (!hn::AllFalse(d, (answerable & contact_before & !decided).m)) [[unlikely]]
     stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(moved_u, moved_dy, moved_phi));
 
@@ -416,12 +454,18 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     hn::StoreU(hn::ConvertTo(di, which), di, which_out + i);
   }
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
-  pack(d, contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  pack(d, roots, (answerable & !free_flight & !is_contact).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  if (!hn::AllTrue(d, inside)) [[unlikely]] {
-    roots.moved = contacts.moved = true;
-    pack(d, scalar, (!(answerable | free_flight)).m, u, dy, phi, offset, index);
+  const auto is_root = answerable & !free_flight & !is_contact;
+  if (hn::AllTrue(d, inside)) [[likely]] {
+    pack(d, sorted.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    pack(d, sorted.roots, is_root.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    return;
   }
+  pack(d, sorted.contacts, (is_contact & !subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  pack(d, sorted.roots, (is_root & !subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  pack(d, sorted.contacts_of_subnormal_phi, (is_contact & subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  pack(d, sorted.roots_of_subnormal_phi, (is_root & subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+  pack(d, sorted.scalar, (!(answerable | free_flight)).m, u, dy, phi, offset, index);
+  sorted.roots.moved = sorted.contacts.moved = sorted.roots_of_subnormal_phi.moved = sorted.contacts_of_subnormal_phi.moved = true;
 }
 
 template <class T>
@@ -431,12 +475,19 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   using D = hn::ScalableTag<T>;
   const D d;
   const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
-  packed_lanes<T> roots, contacts, scalar;
+  sorted_lanes<T> sorted;
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
-    for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, roots, contacts, scalar);
-    left += solve_packed(d, roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D>(x...); });
-    left += solve_packed(d, contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D>(x...); });
+    for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, sorted);
+    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); });
+    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); });
+    if (sorted.roots_of_subnormal_phi.count != 0)
+      left += solve_packed(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
+                           [](auto... x) { return answer_roots<D, true>(x...); });
+    if (sorted.contacts_of_subnormal_phi.count != 0)
+      left += solve_packed(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
+                           [](auto... x) { return answer_contacts<D, true>(x...); });
+    packed_lanes<T>& scalar = sorted.scalar;
     for (std::ptrdiff_t k = 0; k < scalar.count; ++k) {
       const auto lane = static_cast<std::ptrdiff_t>(scalar.index[k]);
       solve_stable_lane(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
