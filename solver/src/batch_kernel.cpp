@@ -6,12 +6,14 @@
 // every lane runs the operations solve_stable runs for it, so every answered
 // lane is solve_stable's answer bit for bit.
 //
-// A vector answers the lanes inside the common window as they are, and the
-// others that phi's band lets move (the band route of solve_stable): u and
-// dy move by a power of two into the band's box and s moves back. Free flight
-// is answered for any valid input. The rest (phi in no band or subnormal,
-// u and dy too far apart, zero or subnormal u or dy, an s that underflows or
-// overflows once moved back, invalid input) go to solve_stable, one by one.
+// Two passes over each block of lanes. The first decides each lane's case and
+// answers free flight (any valid input); it packs the other lanes by what
+// they cost, as they are inside the common window, or moved by a power of two
+// into phi's band box (the band route of solve_stable). The second solves
+// each pack in whole vectors and moves s back. The rest (phi in no band, a
+// subnormal phi in float, u and dy too far apart, zero or subnormal u or dy,
+// an s that underflows or overflows once moved back, invalid input) go to
+// solve_stable, one by one.
 #include <hwy/highway.h>
 
 #include <algorithm>
