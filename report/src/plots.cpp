@@ -405,7 +405,8 @@ void draw_panel(std::ostream& body, const canvas& c, double top, double bottom, 
   for (const auto& p : finite)
     body << separator << quoted(dat) << " index " << p.block << " using 1:2:3:4 with xerrorbars lc rgb '"
          << colour_of(p.algorithm) << "' pt " << marker_of(p.type) << " ps 1.4 notitle";
-  if (finite.empty() && pn.types.empty()) body << "2 notitle";
+  if (finite.empty())  // a curve below the axis: gnuplot draws no plot of key entries alone
+    body << separator << text_of(std::pow(10, ly0 - 10)) << " notitle";
   body << "\nunset label\nunset key\nunset title\n";
 }
 
@@ -600,13 +601,15 @@ void write_histogram_figure(std::ostream& gp, const fs::path& dir, const std::ve
     if (h.first > h.last) continue;
     first = std::min(first, h.first), last = std::max(last, h.last);
     std::ofstream dat(dir / ("hist_" + type + "_" + algorithm + ".dat"));
-    dat << "# bin, its upper edge, then the fraction of samples per scene:";
+    dat << "# bin, its upper edge, then the fraction of samples per scene (NaN: none):";
     for (const auto& [scene, a] : h.lines) dat << " " << scene;
     dat << "\n";
     for (int b = h.first; b <= h.last; ++b) {
       dat << b << " \"" << histogram_tick(b, h.first, h.last) << "\"";
-      for (const auto& [scene, a] : h.lines)
-        dat << " " << value(double(a->histogram[static_cast<std::size_t>(b)]) / double(std::max(1L, a->samples)));
+      for (const auto& [scene, a] : h.lines) {  // NaN: an empty bin, where the line breaks
+        const long n = a->histogram[static_cast<std::size_t>(b)];
+        dat << " " << (n ? value(double(n) / double(std::max(1L, a->samples))) : std::string("NaN"));
+      }
       dat << "\n";
     }
     panels.push_back(std::move(h));
@@ -657,19 +660,9 @@ void write_histogram_figure(std::ostream& gp, const fs::path& dir, const std::ve
          << quoted(leftmost ? "fraction of samples" : "") << "\n"
          << "set title " << quoted(panels[static_cast<std::size_t>(i)].algorithm) << " textcolor rgb '"
          << colour_of(panels[static_cast<std::size_t>(i)].algorithm) << "' offset 0,-0.6\n";
-    if (i == 0)
-      body << "set key at screen 0.5, screen " << fraction(c.y(margin_t - 34)) << " center top horizontal samplen 3\n";
-    else
-      body << "unset key\n";
-    body << "plot ";
+    body << "unset key\nplot ";
     const auto& h = panels[static_cast<std::size_t>(i)];
     const char* separator = "";
-    if (i == 0)
-      for (std::size_t s = 0; s < scene_names.size(); ++s) {
-        body << separator << "keyentry with linespoints lw 2 dt " << s + 1 << " pt " << marker_of(type)
-             << " lc rgb 'black' title " << quoted(scene_names[s]);
-        separator = ", \\\n  ";
-      }
     for (std::size_t k = 0; k < h.lines.size(); ++k) {
       const auto s = std::find(scene_names.begin(), scene_names.end(), h.lines[k].first) - scene_names.begin();
       body << separator << quoted("hist_" + type + "_" + h.algorithm + ".dat") << " using 1:" << k + 3 << " lw 2 dt "
@@ -678,7 +671,15 @@ void write_histogram_figure(std::ostream& gp, const fs::path& dir, const std::ve
     }
     body << "\n";
   }
-  body << "unset multiplot\n";
+  // the key, a line style per scene, in a band of the figure's width under its title
+  body << "set lmargin at screen 0.02; set rmargin at screen 0.98; set tmargin at screen " << fraction(c.y(38))
+       << "; set bmargin at screen " << fraction(c.y(62)) << "\nunset border\nunset tics\nunset title\nunset xlabel\n"
+       << "unset ylabel\nunset grid\nunset logscale\nset xrange [0:1]\nset yrange [0:1]\n"
+       << "set key inside center center horizontal maxrows 1 samplen 3 width 2\nplot ";
+  for (std::size_t s = 0; s < scene_names.size(); ++s)
+    body << "keyentry with linespoints lw 2 dt " << s + 1 << " pt " << marker_of(type) << " lc rgb 'black' title "
+         << quoted(scene_names[s]) << ", \\\n  ";
+  body << "2 notitle\nunset multiplot\n";
   emit(gp, "hist_" + type, c.width, c.height, body.str());
   made.push_back("hist_" + type);
 }
