@@ -230,8 +230,8 @@ struct point {
   double plotted() const { return std::max(error, 1e-3); }  // a log axis shows no 0
 };
 
-// A panel: its points, drawn in `area` (pixels of a `width` x `height` canvas),
-// the inf/NaN strip on top; one front per type.
+// A panel of a chart of error against time: its points, the inf/NaN strip on
+// top of it, one front per type.
 struct panel {
   std::string title;
   std::vector<point> points;
@@ -246,6 +246,9 @@ struct canvas {
   double y(double py) const { return 1 - py / height; }
 };
 
+// The layout of a panel, in pixels: the margins left of the plot and right of
+// it (the key), above the title, the title, the strip's least height, the gap
+// under the strip and the time axis under the plot.
 constexpr int left_px = 95, key_px = 235, top_px = 16, title_px = 30, strip_px = 56, gap_px = 8, axis_px = 52;
 
 std::string label_commands(const std::vector<point>& pts, const std::vector<std::pair<double, double>>& at,
