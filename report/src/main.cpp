@@ -128,6 +128,17 @@ int main(int argc, char** argv) {
       reference = &s;
     }
   }
+  const report::scene* headline = nullptr;
+  for (const auto& s : scenes) {
+    if (!report::asks_for(s, report::plot::headline)) continue;
+    if (headline) {
+      std::fprintf(stderr, "%s:%ld: plots: the headline figure is already asked for by scene '%s' (%s): at most one scene asks for it\n",
+                   s.file.c_str(), s.plots_line, headline->name.c_str(), headline->file.c_str());
+      bad = true;
+    } else {
+      headline = &s;
+    }
+  }
   if (bad) return 1;
   if (check_only) {
     for (const auto& s : scenes) std::printf("%s: scene %s is well-formed\n", s.file.c_str(), s.name.c_str());

@@ -590,7 +590,11 @@ void write_scene(std::ostream& md, const scene_result& r, const std::vector<std:
   if (const auto rows = rows_of(r); !rows.empty()) {
     write_results(md, r, rows);
     if (!r.accuracy.empty() && s.families.size() > 1) write_family_max(md, r);
-    md << plot_link("pareto_" + s.name, plots, "Error against run time, scene " + s.name);
+    if (std::find(plots.begin(), plots.end(), "pareto_" + s.name) != plots.end())
+      md << "Maximum ulp error against ns per solve: double and float in one panel, the wider types in another; "
+            "colour for the algorithm, shape for the type, a line per type through the points no other of its type "
+            "beats on both (the Pareto front); the strip on top holds the infinite and NaN errors.\n\n"
+         << plot_link("pareto_" + s.name, plots, "Error against run time, scene " + s.name);
   }
   if (!r.throughput.empty()) write_throughput(md, r);
   if (!r.energy.empty()) write_energy(md, r, plots);
@@ -814,7 +818,18 @@ bool write_report(const std::string& directory, const std::vector<scene_result>&
      << "- **Batch targets** the library holds: " << join(held) << "; this CPU supports: " << join(supported)
      << "; dispatch chose: **" << info.batch_chosen << "** (the `batch` rows).\n\n"
      << "Every figure below is measured in this run; `results.csv` and `results.json` hold the same figures "
-        "with full precision.\n\n## Headline figures\n\n";
+        "with full precision.\n\n";
+  if (std::find(plots.begin(), plots.end(), "headline") != plots.end()) {
+    std::string timed;
+    for (const auto& r : scenes)
+      if (asks_for(r.s, plot::headline)) timed = r.s.name;
+    md << "Which algorithm to use, in double: each point is an algorithm, its worst maximum ulp error over every "
+          "scene against its median ns per solve on scene " << timed
+       << "; lower is better on both axes. The line joins the algorithms that no other beats on both (the Pareto "
+          "front); the strip on top holds those whose error is infinite or NaN in some scene.\n\n"
+       << plot_link("headline", plots, "Worst error over all scenes against run time, double");
+  }
+  md << "## Headline figures\n\n";
   std::ostringstream head;
   write_headline(head, scenes, info, headline);
   md << head.str();
@@ -824,8 +839,11 @@ bool write_report(const std::string& directory, const std::vector<scene_result>&
   {
     std::string hist;
     for (const auto& name : plots)
-      if (name.rfind("hist_", 0) == 0) hist += plot_link(name, plots, "Error histogram, " + name.substr(5));
-    if (!hist.empty()) md << "## Error histograms\n\nFraction of samples per ulp-error bin, one line per scene.\n\n" << hist;
+      if (name.rfind("hist_", 0) == 0) hist += plot_link(name, plots, "Error histograms, " + name.substr(5));
+    if (!hist.empty())
+      md << "## Error histograms\n\nFraction of samples per ulp-error bin: a figure per type, a panel per algorithm "
+            "on shared axes, a line per scene. The data of each panel is in `plots/hist_TYPE_ALGORITHM.dat`.\n\n"
+         << hist;
   }
   std::ofstream(dir / "report.md") << md.str();
 

@@ -16,6 +16,18 @@ namespace report {
 
 bool asks_for(const run& r, check c) { return std::find(r.checks.begin(), r.checks.end(), c) != r.checks.end(); }
 
+bool asks_for(const scene& s, plot p) { return std::find(s.plots.begin(), s.plots.end(), p) != s.plots.end(); }
+
+std::string name_of(plot p) {
+  switch (p) {
+    case plot::headline: return "headline";
+    case plot::pareto: return "pareto";
+    case plot::histograms: return "histograms";
+    case plot::energy: return "energy";
+  }
+  return "?";
+}
+
 const run* batch_timing_run(const scene& s) {
   for (const run& r : s.runs)
     if (asks_for(r, check::timing) && std::find(r.types.begin(), r.types.end(), "double") != r.types.end() &&
@@ -229,6 +241,25 @@ class reader {
     return out;
   }
 
+  // [scene] plots: names of all_plots, each at most once; [] asks for none.
+  std::vector<plot> plots(const toml::node& node) const {
+    if (const toml::array* empty = node.as_array(); empty && empty->empty()) return {};
+    const std::vector<std::string> names = strings(node, "plots");  // names each at most once
+    const toml::array& array = *node.as_array();
+    std::vector<plot> out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const plot* p = std::find_if(std::begin(all_plots), std::end(all_plots),
+                                   [&](plot k) { return name_of(k) == names[i]; });
+      if (p == std::end(all_plots)) {
+        std::vector<std::string> known;
+        for (plot k : all_plots) known.push_back(name_of(k));
+        fail(array[i], "unknown plot '" + names[i] + "' (known: " + join(known) + ")");
+      }
+      out.push_back(*p);
+    }
+    return out;
+  }
+
   run parse_run(const toml::table& table) const {
     run r;
     r.line = line_of(table);
@@ -282,7 +313,7 @@ class reader {
     const toml::node& header_node = require(root, "scene", "a scene file");
     const toml::table* header = header_node.as_table();
     if (!header) fail(header_node, "'scene' must be a table: [scene]");
-    only(*header, {"name", "title", "description", "seed", "mpfr_digits10", "batch_reference"}, "[scene]");
+    only(*header, {"name", "title", "description", "seed", "mpfr_digits10", "batch_reference", "plots"}, "[scene]");
     const toml::node& name = require(*header, "name", "[scene]");
     s.name = string(name, "name");
     if (s.name.empty() || !std::all_of(s.name.begin(), s.name.end(), [](char c) {
@@ -297,6 +328,10 @@ class reader {
     if (const toml::node* n = header->get("batch_reference")) {
       s.batch_reference = boolean(*n, "batch_reference");
       s.batch_reference_line = line_of(*n);
+    }
+    if (const toml::node* n = header->get("plots")) {
+      s.plots = plots(*n);
+      s.plots_line = line_of(*n);
     }
 
     auto tables = [&](const char* key, auto&& each) {
@@ -341,6 +376,11 @@ class reader {
     if (s.energy && !simulates) fail(s.energy->line, "[oscillator] is not used: no [[run]] asks for the energy check");
     if (s.batch_reference && !batch_timing_run(s))
       fail(s.batch_reference_line, "batch_reference: no [[run]] of the scene times batch in double");
+    if (asks_for(s, plot::headline) &&
+        std::none_of(s.runs.begin(), s.runs.end(), [](const run& r) {
+          return asks_for(r, check::timing) && std::find(r.types.begin(), r.types.end(), "double") != r.types.end();
+        }))
+      fail(s.plots_line, "plots: the headline figure takes its times from this scene, and no [[run]] of it times double");
     if (!s.families.empty() && !solves_families)
       fail(s.families.front().line, "the families are not used: no [[run]] asks for accuracy or timing, and there is no [throughput]");
     return s;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -45,6 +46,16 @@ struct family {
 };
 
 enum class check { accuracy, timing, energy };
+
+// The pictures a scene asks for ([scene] plots, scenes/README.md): the
+// headline figure (its run times in double are the figure's times; at most one
+// scene asks for it), the scene's Pareto panels, its share of the error
+// histograms and its energy plots.
+enum class plot { headline, pareto, histograms, energy };
+inline constexpr plot all_plots[] = {plot::headline, plot::pareto, plot::histograms, plot::energy};
+std::string name_of(plot p);
+// What a scene without the key asks for: every per-scene picture, no headline.
+inline constexpr plot default_plots[] = {plot::pareto, plot::histograms, plot::energy};
 
 // Which types and algorithms to run, and what to measure of them: accuracy and
 // timing on the scene's families, energy on the scene's [oscillator].
@@ -88,6 +99,8 @@ struct scene {
   // timed in the same rounds (measure_batch_across_scenes); at most one.
   bool batch_reference = false;
   long batch_reference_line = 0;
+  std::vector<plot> plots{std::begin(default_plots), std::end(default_plots)};
+  long plots_line = 0;  // of the key, 0 when absent
   std::vector<family> families;
   std::vector<run> runs;
   std::optional<throughput> batch_throughput;
@@ -96,6 +109,8 @@ struct scene {
 
 // Whether the run asks for the check.
 bool asks_for(const run& r, check c);
+// Whether the scene asks for the picture.
+bool asks_for(const scene& s, plot p);
 
 // The first run that times batch in double, or null.
 const run* batch_timing_run(const scene& s);

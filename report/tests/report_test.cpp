@@ -21,6 +21,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "contact/batch.hpp"
@@ -30,6 +31,7 @@
 #include "methods.hpp"
 #include "output.hpp"
 #include "peers.hpp"
+#include "plots.hpp"
 #include "results.hpp"
 
 namespace fs = std::filesystem;
@@ -43,6 +45,7 @@ const char* small_scene = R"([scene]
 name = "small"
 title = "Small scene for the tests"
 seed = 11
+plots = ["headline", "pareto", "histograms", "energy"]
 
 [[family]]
 name = "tanpura"
@@ -307,7 +310,8 @@ json tool::results_;
 TEST_F(tool, runs_and_writes_every_output) {
   ASSERT_EQ(status_, 0) << stderr_;
   for (const char* name : {"report.md", "results.csv", "results.json", "plots/plots.gp", "plots/pareto_small.svg",
-                           "plots/pareto_small.png", "plots/hist_double_textbook.svg", "plots/energy_small_double.png"})
+                           "plots/pareto_small.png", "plots/hist_double.svg", "plots/hist_double_textbook.dat",
+                           "plots/energy_small_double.png", "plots/headline.svg", "plots/headline.png"})
     EXPECT_TRUE(fs::exists(work / "out" / name)) << name;
   EXPECT_NE(stderr_.find("contact-report: scene small"), std::string::npos);  // progress on stderr
   // a PNG is a PNG
@@ -622,6 +626,203 @@ TEST_F(tool, the_iterative_peers_give_finite_errors_on_physical_inputs) {
       EXPECT_LE(a["iterations"]["max"].get<long>(), algorithm == "practitioner_newton" ? 20 : 50);
     EXPECT_NE(pareto.find("# " + type + " " + algorithm + "\n"), std::string::npos);
   }
+}
+
+// ---- the pictures: the headline figure, the Pareto panels, the histograms ----
+
+// The blocks of a Pareto data file: "type algorithm" -> its data line's
+// columns, and "front TYPE" -> the front's algorithms by increasing time.
+struct pareto_data {
+  std::map<std::string, std::vector<std::string>> points;
+  std::map<std::string, std::vector<std::string>> fronts;
+};
+
+pareto_data read_pareto(const fs::path& p) {
+  pareto_data out;
+  std::ifstream in(p);
+  std::string line, block;
+  std::getline(in, line);  // what the columns are
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (line.rfind("# ", 0) == 0) {
+      block = line.substr(2);
+      continue;
+    }
+    const auto cells = split(line, ' ');
+    if (block.rfind("front ", 0) == 0) {
+      EXPECT_EQ(cells.size(), 3u) << line;
+      if (cells.size() == 3) out.fronts[block.substr(6)].push_back(cells[2]);
+    } else {
+      out.points[block] = cells;
+    }
+  }
+  return out;
+}
+
+// The algorithms that no other beats on both time and error, by increasing
+// time: failures (an infinite or NaN error) are never on it and beat nothing.
+std::vector<std::string> front_of(const std::vector<std::tuple<std::string, double, double>>& points) {
+  std::vector<std::tuple<double, double, std::string>> front;
+  for (const auto& [name, time, error] : points) {
+    if (!std::isfinite(error)) continue;
+    bool beaten = false;
+    for (const auto& [other, t, e] : points)
+      beaten = beaten || (std::isfinite(e) && t <= time && e <= error && (t < time || e < error));
+    if (!beaten) front.emplace_back(time, error, name);
+  }
+  std::sort(front.begin(), front.end());
+  std::vector<std::string> names;
+  for (const auto& f : front) names.push_back(std::get<2>(f));
+  return names;
+}
+
+// (algorithm, ns median, max ulp) of the scene's rows in `type` that have both a timing and an accuracy.
+std::vector<std::tuple<std::string, double, double>> timed_and_measured(const json& scene, const std::string& type) {
+  std::vector<std::tuple<std::string, double, double>> out;
+  for (const auto& a : scene["accuracy"])
+    for (const auto& t : scene["timing"])
+      if (a["type"] == type && t["type"] == type && a["algorithm"] == t["algorithm"]) {
+        const double error = value_of(a["max_ulp"]);
+        out.emplace_back(a["algorithm"].get<std::string>(), value_of(t["ns_median"]), std::isnan(error) ? INFINITY : error);
+      }
+  return out;
+}
+
+TEST_F(tool, the_headline_figure_comes_first_in_report_md) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string png = read(work / "out" / "plots" / "headline.png");
+  ASSERT_GE(png.size(), 8u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  const auto figure = markdown_.find("](plots/headline.png)");
+  ASSERT_NE(figure, std::string::npos);
+  EXPECT_LT(figure, markdown_.find("## Headline figures"));
+  EXPECT_EQ(markdown_.find("!["), markdown_.rfind("![", figure));  // the first picture
+  // every algorithm timed in double, and none of the batch[NAME] rows, which have no error of their own
+  const auto data = read_pareto(work / "out" / "plots" / "headline.dat");
+  for (const auto& [algorithm, time, error] : timed_and_measured(scene(), "double"))
+    EXPECT_EQ(data.points.count("double " + algorithm), 1u) << algorithm;
+  for (const auto& row : target_rows()) EXPECT_EQ(data.points.count("double " + row), 0u) << row;
+  EXPECT_EQ(data.points.size(), timed_and_measured(scene(), "double").size());
+}
+
+TEST_F(tool, the_fronts_drawn_join_the_points_no_other_of_their_type_beats) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto pareto = read_pareto(work / "out" / "plots" / "pareto_small.dat");
+  for (const char* type : {"double", "float", "long_double"}) {
+    const auto expected = front_of(timed_and_measured(scene(), type));
+    SCOPED_TRACE(type);
+    if (expected.size() < 2) {
+      EXPECT_EQ(pareto.fronts.count(type), 0u);  // a front of one point is no line
+      continue;
+    }
+    ASSERT_EQ(pareto.fronts.count(type), 1u);
+    EXPECT_EQ(pareto.fronts.at(type), expected);
+  }
+  EXPECT_GE(pareto.fronts.count("double"), 1u);
+  // the headline figure: the worst error over the scenes (here one) against the time
+  const auto headline = read_pareto(work / "out" / "plots" / "headline.dat");
+  ASSERT_EQ(headline.fronts.count("double"), 1u);
+  EXPECT_EQ(headline.fronts.at("double"), front_of(timed_and_measured(scene(), "double")));
+}
+
+TEST_F(tool, infinite_and_nan_errors_go_to_the_strip_not_onto_the_error_axis) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const auto pareto = read_pareto(work / "out" / "plots" / "pareto_small.dat");
+  const std::string script = read(work / "out" / "plots" / "plots.gp");
+  int failures = 0;
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string key = a["type"].get<std::string>() + " " + a["algorithm"].get<std::string>();
+    if (!pareto.points.count(key)) continue;
+    const auto& cells = pareto.points.at(key);
+    ASSERT_EQ(cells.size(), 6u) << key;
+    const double error = value_of(a["max_ulp"]);
+    if (std::isfinite(error)) {
+      EXPECT_NE(cells[1], "?") << key;
+      EXPECT_LE(std::strtod(cells[1].c_str(), nullptr), std::max(error, 1e-3) * (1 + 1e-5)) << key;
+    } else {
+      ++failures;
+      EXPECT_EQ(cells[1], "?") << key;  // no number on the error axis
+      EXPECT_EQ(cells[5], std::isnan(error) ? "nan" : "inf") << key;
+    }
+  }
+  EXPECT_GT(failures, 0);  // the wild family breaks some algorithm
+  EXPECT_NE(script.find("set label 'inf/NaN'"), std::string::npos);
+  EXPECT_NE(script.find("using 1:(0.5):3:4"), std::string::npos);  // the failures, drawn in the strip
+  EXPECT_EQ(script.find("1e19"), std::string::npos);
+}
+
+TEST_F(tool, the_pareto_plot_has_a_panel_for_double_and_float_and_one_for_the_wider_types) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string script = read(work / "out" / "plots" / "plots.gp");
+  const auto begin = script.find("\n# pareto_small\n");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string pareto = script.substr(begin, script.find("\n# ", begin + 1) - begin);
+  EXPECT_NE(pareto.find("set multiplot"), std::string::npos);
+  EXPECT_NE(pareto.find("set title 'Scene small, double and float'"), std::string::npos);
+  EXPECT_NE(pareto.find("set title 'Scene small, the wider types (long_double, cpp_bin_float_50)'"), std::string::npos);
+  // labelled points, one colour per algorithm and one marker per type
+  for (const auto& [algorithm, time, error] : timed_and_measured(scene(), "double")) {
+    SCOPED_TRACE(algorithm);
+    EXPECT_NE(pareto.find("set label '" + algorithm + "' at first "), std::string::npos);
+    EXPECT_NE(pareto.find("lc rgb '" + report::colour_of(algorithm) + "' pt " + std::to_string(report::marker_of("double"))),
+              std::string::npos);
+  }
+  EXPECT_NE(pareto.find("set label 'stable (cpp_bin_float_50)' at first "), std::string::npos);
+}
+
+TEST_F(tool, the_histograms_are_a_figure_per_type_with_a_data_file_per_algorithm) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  for (const auto& a : scene()["accuracy"]) {
+    const std::string type = a["type"], algorithm = a["algorithm"];
+    SCOPED_TRACE(type + " " + algorithm);
+    EXPECT_TRUE(fs::exists(work / "out" / "plots" / ("hist_" + type + "_" + algorithm + ".dat")));
+    EXPECT_FALSE(fs::exists(work / "out" / "plots" / ("hist_" + type + "_" + algorithm + ".png")));
+    EXPECT_TRUE(fs::exists(work / "out" / "plots" / ("hist_" + type + ".png")));
+    EXPECT_NE(markdown_.find("](plots/hist_" + type + ".png)"), std::string::npos);
+  }
+}
+
+TEST_F(tool, a_scene_that_asks_for_no_plots_gets_none) {
+  std::ofstream(work / "no-plots.toml") << R"([scene]
+name = "no_plots"
+plots = []
+[[family]]
+name = "box"
+generator = "box"
+samples = 50
+u = [1e-6, 1e-3]
+dy = { log10 = [-6, -3], sign = "both" }
+phi = [1e-2, 1e4]
+[[run]]
+types = ["double"]
+algorithms = ["stable", "textbook"]
+checks = ["accuracy", "timing"]
+timing_inputs = 64
+repetitions = 2
+min_time = 0.002
+)";
+  const auto r = run_tool("--scene '" + (work / "no-plots.toml").string() + "' --out '" + (work / "no-plots-out").string() + "'",
+                          "no-plots");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(work / "no-plots-out" / "plots"));
+  const std::string md = read(work / "no-plots-out" / "report.md");
+  EXPECT_EQ(md.find("!["), std::string::npos);
+  EXPECT_TRUE(json::parse(read(work / "no-plots-out" / "results.json"))["plots"].empty());
+}
+
+TEST_F(tool, two_scenes_that_ask_for_the_headline_figure_are_an_error_with_file_and_line) {
+  const std::string scene = "[scene]\nname = \"NAME\"\nplots = [\"headline\"]\n[[family]]\nname = \"box\"\n"
+                            "generator = \"box\"\nsamples = 8\nu = [1e-6, 1e-3]\ndy = [1e-6, 1e-3]\nphi = 2.0\n"
+                            "[[run]]\ntypes = [\"double\"]\nalgorithms = [\"stable\"]\nchecks = [\"timing\"]\n";
+  std::ofstream(work / "head-a.toml") << std::string(scene).replace(scene.find("NAME"), 4, "head_a");
+  std::ofstream(work / "head-b.toml") << std::string(scene).replace(scene.find("NAME"), 4, "head_b");
+  const auto r = run_tool("--check --scene '" + (work / "head-a.toml").string() + "' --scene '" +
+                              (work / "head-b.toml").string() + "'",
+                          "two-headlines");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("head-b.toml:3: plots: the headline figure is already asked for by scene 'head_a'"),
+            std::string::npos)
+      << r.err;
 }
 
 // ---- the batch targets: each kernel the CPU runs, timed alone as batch[NAME] ----

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "contact/types.hpp"
 #include "inputs.hpp"
@@ -294,6 +295,56 @@ checks = ["timing"]
                "no [[run]] of the scene times batch in double");
   expect_error(with("types = [\"double\"]", "types = [\"float\"]"), "batch_reference = true",
                "no [[run]] of the scene times batch in double");
+}
+
+TEST(scene, plots_names_the_pictures_and_without_it_a_scene_gets_every_picture_but_the_headline) {
+  using report::plot;
+  const auto plain = report::parse_scene_text(good_scene, "good.toml");
+  EXPECT_EQ(plain.plots, (std::vector<plot>{plot::pareto, plot::histograms, plot::energy}));
+  EXPECT_FALSE(report::asks_for(plain, plot::headline));
+  const auto some = report::parse_scene_text(edited("seed = 9", "seed = 9\nplots = [\"headline\", \"pareto\"]"), "x.toml");
+  EXPECT_EQ(some.plots, (std::vector<plot>{plot::headline, plot::pareto}));
+  EXPECT_EQ(some.plots_line, 6);
+  EXPECT_TRUE(report::asks_for(some, plot::headline));
+  EXPECT_FALSE(report::asks_for(some, plot::histograms));
+  const auto none = report::parse_scene_text(edited("seed = 9", "seed = 9\nplots = []"), "x.toml");
+  EXPECT_TRUE(none.plots.empty());
+  for (plot p : report::all_plots)
+    EXPECT_EQ(report::parse_scene_text(edited("seed = 9", "seed = 9\nplots = [\"" + report::name_of(p) + "\"]"), "x.toml").plots,
+              std::vector<plot>{p});
+}
+
+TEST(scene, plots_names_are_checked) {
+  expect_error(edited("seed = 9", "seed = 9\nplots = [\"pareto\", \"paretto\"]"), "plots", "unknown plot 'paretto'");
+  expect_error(edited("seed = 9", "seed = 9\nplots = [\"pareto\", \"pareto\"]"), "plots", "named twice");
+  expect_error(edited("seed = 9", "seed = 9\nplots = \"pareto\""), "plots", "'plots' must be an array of strings");
+}
+
+TEST(scene, the_headline_figure_needs_a_run_that_times_double) {
+  const std::string asks = edited("seed = 9", "seed = 9\nplots = [\"headline\"]");
+  EXPECT_NO_THROW(report::parse_scene_text(asks, "x.toml"));
+  // the good scene's only timing run, in double and float128, times float128 alone
+  expect_error(edited("types = [\"double\", \"float128\"]", "types = [\"float128\"]", asks), "plots",
+               "no [[run]] of it times double");
+}
+
+TEST(scene, the_default_scenes_ask_for_the_headline_once_and_for_the_pareto_panels_and_histograms) {
+  int headline = 0, pareto = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(CONTACT_SCENES_DIR)) {
+    if (entry.path().extension() != ".toml") continue;
+    const auto s = report::parse_scene(entry.path().string());
+    headline += report::asks_for(s, report::plot::headline);
+    bool measures = false;
+    for (const auto& r : s.runs) measures = measures || report::asks_for(r, report::check::accuracy);
+    if (!measures) continue;
+    EXPECT_TRUE(report::asks_for(s, report::plot::pareto)) << s.name;
+    EXPECT_TRUE(report::asks_for(s, report::plot::histograms)) << s.name;
+    pareto += report::asks_for(s, report::plot::pareto);
+  }
+  EXPECT_EQ(headline, 1);
+  EXPECT_GE(pareto, 4);
+  EXPECT_TRUE(report::asks_for(report::parse_scene(std::string(CONTACT_SCENES_DIR) + "/physical.toml"),
+                               report::plot::headline));
 }
 
 TEST(scene, an_unreadable_file_is_an_error_at_line_0) {
