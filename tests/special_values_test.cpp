@@ -87,6 +87,36 @@ TEST(Cases, AnInvalidResultLiesOnNoSide) {
   EXPECT_FALSE(lies_on_its_side(contact_case::invalid, nan, 1.0));
 }
 
+// A case number that names no case (contact-check casts a candidate's answer)
+// reads as invalid: its name, its equation, no side.
+TEST(Cases, ANumberThatNamesNoCaseReadsAsInvalid) {
+  const auto unknown = static_cast<contact_case>(7);
+  EXPECT_EQ(name_of(unknown), "invalid");
+  EXPECT_EQ(equation_of(unknown), "invalid");
+  EXPECT_FALSE(lies_on_its_side(unknown, 0.0, 0.0));
+  EXPECT_FALSE(lies_on_its_side(unknown, 2.0, 1.0));
+}
+
+TEST(Algorithms, EachHasItsOwnName) {
+  EXPECT_EQ(name_of(algorithm::textbook), "textbook");
+  EXPECT_EQ(name_of(algorithm::stable), "stable");
+  EXPECT_EQ(name_of(algorithm::newton), "newton");
+  EXPECT_EQ(name_of(algorithm::rounded), "rounded");
+  EXPECT_EQ(name_of(static_cast<algorithm>(9)), "");  // a number that names no algorithm has no name
+}
+
+// contact::solve's default is stable, and so is its answer to a number that
+// names no algorithm.
+TEST(Algorithms, SolveOfANumberThatNamesNoAlgorithmIsStable) {
+  const double inputs[][3] = {{-0.5, -1.0, 3.0}, {2.0, 0.0, 3.0}, {3.0, 1.0, 3.0}, {0.1, 1.0, 4.0}, {nan, 1.0, 1.0}};
+  for (const auto& x : inputs) {
+    const auto r = solve(x[0], x[1], x[2], static_cast<algorithm>(9));
+    const auto stable = solve_stable(x[0], x[1], x[2]);
+    EXPECT_EQ(r.which, stable.which) << x[0] << " " << x[1] << " " << x[2];
+    EXPECT_TRUE(r.s == stable.s || (std::isnan(r.s) && std::isnan(stable.s))) << x[0] << " " << x[1] << " " << x[2];
+  }
+}
+
 // Release with dy the largest double: only +infinity lies on release's side
 // of dy, and stable answers it even where the root itself rounds to the
 // largest double (a known cost of keeping each case on its side; the

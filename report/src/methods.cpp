@@ -16,8 +16,12 @@ std::string name_of(method m) {
     case method::boost_halley: return "boost_halley";
     case method::boost_toms748: return "boost_toms748";
     case method::practitioner_newton: return "practitioner_newton";
-    default: return std::string(contact::name_of(*library_algorithm(m)));
+    case method::textbook:
+    case method::stable:
+    case method::newton:
+    case method::rounded: return std::string(contact::name_of(*library_algorithm(m)));
   }
+  return "";  // a number that names no method
 }
 
 std::optional<method> method_named(std::string_view name) {

@@ -1,6 +1,7 @@
 // The algorithms of the report's tables: the library's four
 // (contact::algorithm), its batch API, two quadratic peers (peers.hpp) and
-// four iterative peers (iterative_peers.hpp).
+// four iterative peers (iterative_peers.hpp). The switches on method name
+// every one and have no default (-Werror=switch: a new one must be placed).
 #pragma once
 
 #include <optional>
@@ -38,8 +39,15 @@ constexpr std::optional<contact::algorithm> library_algorithm(method m) {
     case method::stable: return contact::algorithm::stable;
     case method::newton: return contact::algorithm::newton;
     case method::rounded: return contact::algorithm::rounded;
-    default: return std::nullopt;
+    case method::batch:
+    case method::boost_quadratic:
+    case method::eigen_companion:
+    case method::boost_newton:
+    case method::boost_halley:
+    case method::boost_toms748:
+    case method::practitioner_newton: break;
   }
+  return std::nullopt;
 }
 
 // The methods that iterate on the residual: the report counts their iterations.
@@ -50,8 +58,14 @@ constexpr bool iterative(method m) {
     case method::boost_halley:
     case method::boost_toms748:
     case method::practitioner_newton: return true;
-    default: return false;
+    case method::textbook:
+    case method::stable:
+    case method::rounded:
+    case method::batch:
+    case method::boost_quadratic:
+    case method::eigen_companion: break;
   }
+  return false;
 }
 
 std::string name_of(method m);

@@ -22,8 +22,9 @@ constexpr std::string_view equation_of(contact_case c) {
     case contact_case::impact: return "(A.30)";
     case contact_case::contact: return "(A.31)";
     case contact_case::release: return "(A.32)";
-    default: return "invalid";
+    case contact_case::invalid: break;
   }
+  return "invalid";  // contact_case::invalid, or a number that names no case
 }
 
 // The case's name, as the CLI, the report and the fuzzers print it.
@@ -33,8 +34,9 @@ constexpr std::string_view name_of(contact_case c) {
     case contact_case::impact: return "impact";
     case contact_case::contact: return "contact";
     case contact_case::release: return "release";
-    default: return "invalid";
+    case contact_case::invalid: break;
   }
+  return "invalid";  // contact_case::invalid, or a number that names no case
 }
 
 inline constexpr contact_case valid_cases[] = {contact_case::free, contact_case::impact, contact_case::contact,
@@ -48,8 +50,9 @@ constexpr bool lies_on_its_side(contact_case c, const T& s, const T& dy) {
     case contact_case::impact: return s < dy;
     case contact_case::contact: return s <= dy;
     case contact_case::release: return s > dy;
-    default: return false;
+    case contact_case::invalid: break;
   }
+  return false;
 }
 
 // Release claims s > dy: with dy the largest finite T only +infinity lies
@@ -71,13 +74,18 @@ struct solution {
 // of contact::rounded_available only.
 enum class algorithm { textbook, stable, newton, rounded };
 
+// The switches on contact_case and algorithm name every enumerator and have no
+// default: the build compiles them with -Werror=switch (solver/CMakeLists.txt),
+// so a new enumerator without its name does not compile.
 constexpr std::string_view name_of(algorithm a) {
+  std::string_view name;  // stays empty only for a number that names no algorithm
   switch (a) {
-    case algorithm::textbook: return "textbook";
-    case algorithm::stable: return "stable";
-    case algorithm::rounded: return "rounded";
-    default: return "newton";
+    case algorithm::textbook: name = "textbook"; break;
+    case algorithm::stable: name = "stable"; break;
+    case algorithm::newton: name = "newton"; break;
+    case algorithm::rounded: name = "rounded"; break;
   }
+  return name;
 }
 
 }  // namespace contact

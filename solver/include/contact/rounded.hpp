@@ -1,29 +1,10 @@
 // The correctly rounded root of (A.2): s is the exact root rounded to nearest,
 // ties to even, in T (float, double, long double, float128), with the exact case.
 //
-// The method is the one of correctly rounded libraries (CORE-MATH):
-//
-// 1. A fast approximation with a rigorous error bound. The stable path gives s0
-//    within a few ulps; one Newton step on the case's polynomial Q (the
-//    quadratic or linear equation whose root the case's closed form is), with
-//    Q(s0) evaluated by error-free transformations, gives s0 + delta within
-//    about 2^-2p |s| of the root. In double inside the plain window the bound
-//    is a constant per case, proven by Gappa from the stable path's proven
-//    bound (fixed_bound_<case>); elsewhere it is computed as the step goes (no
-//    a-priori error claim of the stable path enters).
-// 2. A rounding test: if no rounding boundary (the midpoint between two
-//    neighbouring T values) lies within the bound of s0 + delta, the root
-//    rounds as s0 + delta does.
-// 3. Otherwise, and outside the exponent window where step 1 is analysed, the
-//    exact decision: R is strictly increasing, so the root lies above a
-//    midpoint m exactly when R(m) < 0, and on each side of dy the sign of R(m)
-//    is that of a polynomial in m, u, dy and phi whose terms are products of
-//    T values. Each product is an exact expansion (TwoProd on significands),
-//    the terms are scaled<T> (significand and separate exponent, so nothing
-//    under- or overflows for any finite input), and the sign of their sum is
-//    decided exactly (Shewchuk's expansion). An exact zero is a tie, which goes
-//    to the even neighbour. Starting from the best candidate at hand, the walk
-//    moves one T value at a time until the root lies between the two midpoints.
+// The method is that of correctly rounded libraries (CORE-MATH): a fast
+// approximation with a rigorous error bound, a rounding test, and where the
+// test cannot decide, an exact decision (the three steps: below, before the
+// exact decision's code).
 //
 // Complementarity holds only weakly: where the root lies within half an ulp of
 // dy, the correctly rounded value may be dy itself (impact s <= dy, release
@@ -54,6 +35,30 @@ namespace contact {
 // so that this header needs no float128, nor libquadmath's header.)
 template <class T>
 inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && std::numeric_limits<T>::radix == 2;
+
+// The method, step by step:
+//
+// 1. A fast approximation with a rigorous error bound. The stable path gives s0
+//    within a few ulps; one Newton step on the case's polynomial Q (the
+//    quadratic or linear equation whose root the case's closed form is), with
+//    Q(s0) evaluated by error-free transformations, gives s0 + delta within
+//    about 2^-2p |s| of the root. In double inside the plain window the bound
+//    is a constant per case, proven by Gappa from the stable path's proven
+//    bound (fixed_bound_<case>); elsewhere it is computed as the step goes (no
+//    a-priori error claim of the stable path enters).
+// 2. A rounding test: if no rounding boundary (the midpoint between two
+//    neighbouring T values) lies within the bound of s0 + delta, the root
+//    rounds as s0 + delta does.
+// 3. Otherwise, and outside the exponent window where step 1 is analysed, the
+//    exact decision: R is strictly increasing, so the root lies above a
+//    midpoint m exactly when R(m) < 0, and on each side of dy the sign of R(m)
+//    is that of a polynomial in m, u, dy and phi whose terms are products of
+//    T values. Each product is an exact expansion (TwoProd on significands),
+//    the terms are scaled<T> (significand and separate exponent, so nothing
+//    under- or overflows for any finite input), and the sign of their sum is
+//    decided exactly (Shewchuk's expansion). An exact zero is a tie, which goes
+//    to the even neighbour. Starting from the best candidate at hand, the walk
+//    moves one T value at a time until the root lies between the two midpoints.
 
 namespace detail {
 
@@ -291,8 +296,8 @@ T veltkamp_splitter() {
 
 // a * b = high + low exactly (barring underflow of low), inline: the hardware
 // fma where the target has one, else Dekker's product on Veltkamp's split (a
-// library fma call, on the baseline x86-64 target, measured slower than the
-// whole split; x87 long double and float128 have no hardware fma at all).
+// library fma call, on the baseline x86-64 target, is slower than the whole
+// split; x87 long double and float128 have no hardware fma at all).
 template <class T>
 [[gnu::always_inline]] inline detail::exact_pair<T> product(const T& a, const T& b) {
 #if defined(__FMA__)

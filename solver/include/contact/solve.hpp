@@ -41,8 +41,9 @@ solution<T> solve(const T& u, const T& dy, const T& phi, algorithm method = algo
     case algorithm::textbook: return solve_textbook(u, dy, phi);
     case algorithm::newton: return solve_newton(u, dy, phi);
     case algorithm::rounded: return detail::solve_rounded_or_refuse(u, dy, phi);
-    default: return solve_stable(u, dy, phi);
+    case algorithm::stable: break;
   }
+  return solve_stable(u, dy, phi);
 }
 
 // textbook, stable and newton keep their positions (code indexes them); rounded is appended.

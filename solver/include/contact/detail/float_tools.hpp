@@ -322,13 +322,12 @@ T step_away_from_zero(const T& x) {
 
 // condition ? if_true : if_false without a branch, for conditions that are a
 // coin toss on the inputs that reach them (the sign of u, say). A compiler
-// may turn ?: into a branch, and does (GCC 12 at -O3, on release's
-// operands); on a blend it cannot. With AVX-512 the
-// values stay in their vector registers and the condition becomes a mask
-// register (measured on physical inputs, where each solve makes one to three:
-// 10.1 -> 9.7 ns per solve, minimum of 6 runs; SSE4.1's blendv gained nothing
-// on the same machine); otherwise the blend is of bits, through the integer
-// registers. Other types take ?:.
+// may turn ?: into a branch, and GCC does at -O3 on release's operands; on a
+// blend it cannot. With AVX-512 the values stay in their vector registers and
+// the condition becomes a mask register (faster on the physical scene's
+// inputs, where each solve makes one to three; SSE4.1's blendv was not);
+// otherwise the blend is of bits, through the integer registers. Other types
+// take ?:.
 template <class T>
 T select(bool condition, const T& if_true, const T& if_false) {
 #if defined(__AVX512F__)
@@ -349,16 +348,15 @@ T select(bool condition, const T& if_true, const T& if_false) {
 
 // a < b ? a : b and a > b ? a : b, which are x86's minsd and maxsd (minss,
 // maxss) exactly, whatever the operands: a NaN or a pair of zeros gives b
-// (at run time: GCC 12 folds constant operands as if the two commuted, a case
+// (at run time: GCC folds constant operands as if the two commuted, a case
 // the clamps never meet, their bounds being non-zero numbers and s a number
 // for every valid input; tests/float_tools_test.cpp, MinAndMax). A clamp
-// written so is one instruction, with no branch, compare or mask
-// register. The stable path's clamps were selects, a compare, a mask and a
-// blend each (measured on the physical scene's inputs, against selects: 0.96
-// of the time per solve in shuffled order; impact inputs alone, which take
-// two clamps, 0.87). Written as intrinsics: GCC 12 compiles the ?: form to
-// minsd where it stands alone, but into a branch inside the band route
-// (measured: the extreme scene's impact inputs 1.2 times slower).
+// written so is one instruction, with no branch, compare or mask register;
+// one of selects takes a compare, a mask and a blend and is slower, most on
+// impact inputs (two clamps), so the stable path clamps with these. Written
+// as intrinsics: GCC compiles the ?: form to minsd where it
+// stands alone, but into a branch inside the band route, which is slower on
+// the extreme scene's impact inputs.
 template <class T>
 T min_of(const T& a, const T& b) {
 #if defined(__SSE2__)

@@ -155,7 +155,7 @@ struct scaled {
   // A subnormal binary32 or binary64 x is k 2^-least_binade_of_bits for the
   // integer k of its significand field, which converts to T exactly (and
   // normal): frexp and ldexp take a slow path on subnormals, and so does any
-  // product with one (a microcode assist, some 50 ns, measured).
+  // product with one (a microcode assist on x86).
   static constexpr int least_binade_of_bits = [] {
     if constexpr (hardware_binary<T>) return binary_layout<T>::bias - 1 + binary_layout<T>::significand_bits;
     else return 0;

@@ -1,12 +1,16 @@
-# DRAFT, not run by any test: a compensated form of stable_form::release, u > 0, for the
-# next step of the 3-ulp aim. Not in the code yet.
+# A compensated form of stable_form::release, u > 0 (case (A.32)), that a later change
+# of the code is to adopt. The code does not use it yet, so claimed_bounds.txt has no
+# line for it and proofs.gappa (gappa_bounds) leaves it out; proofs.gappa.compensated
+# (gappa_bounds --candidate) proves it on its own, checks that Gappa refuses half the
+# bound, and that this line states what Gappa proves (rounded up):
+#! proven: 3.0156250000000089e+0 ulp
 #   p = phi dy, p_low = fma(phi, dy, -p);  st = p dy, st_err = fma(p, dy, -st);
 #   st_low = fma(p_low, dy, st_err)                 (phi dy^2 = st + st_low, to 2^-104)
 #   root = sqrt(fma(u, u, 4 (st + st_low)));  (den, den_low) = two_sum(u, root);
 #   inverse = 1 / den;  q = 2 st inverse;  residual = fma(-q, den, 2 st);
 #   correction = fma(-q, den_low, residual + 2 st_low);  s = fma(correction, inverse, q)
-# Gappa: 3.0000000000000x ulps (3 * 2^-53 + tiny, relative), in the frame phi dy^2 in
-# [1, 4] (homogeneity in (u, dy) by powers of four). The root's error weighs fully when
+# Gappa: 3.0156 ulps (relative error 3.348e-16, about (3 + 2^-6) 2^-53), in the frame
+# phi dy^2 in [1, 4] (homogeneity in (u, dy) by powers of four). The root's error weighs fully when
 # u << sqrt(phi) dy: a discriminant rounded twice (4 (st + st_low), then the fma) gives it
 # 2 units, the last rounding 1. A double-double discriminant would give 2.5, but its
 # low-order sums may cancel to 0, where Gappa cannot bound a relative rounding error, and
