@@ -7,7 +7,7 @@
 // lane is solve_stable's answer bit for bit.
 //
 // A vector answers the lanes inside the common window as they are, and the
-// others that phi's band lets move (the band route of solve_stable): u and
+// others that phi's band lets move (the moved stage of solve_stable): u and
 // dy move by a power of two into the band's box and s moves back. Free flight
 // is answered for any valid input. The rest (phi in no band or subnormal,
 // u and dy too far apart, zero or subnormal u or dy, an s that underflows or
@@ -159,7 +159,7 @@ struct answers {
   hn::Vec<D> which;
 };
 
-// solve_cases<true> on every lane of (u, dy, phi), on which plain arithmetic
+// stage::plain on every lane of (u, dy, phi), on which plain arithmetic
 // is safe: each case's parts from stable.hpp, one division and one square
 // root per lane, numerator and denominator selected by case. The lanes of
 // `answerable` that the pre-test leaves undecided (near the contact
@@ -217,7 +217,7 @@ HWY_INLINE void store(D d, const answers<D>& a, hn::TFromD<D>* s, int* which) {
 
 // A vector with lanes outside the common window: free flight answered for
 // any valid input; the other lanes moved by phi's band where it lets them
-// (solve_stable's band route), solved, and moved back where s stays normal;
+// (solve_stable's moved stage), solved, and moved back where s stays normal;
 // the rest by solve_stable.
 template <class D>
 HWY_NOINLINE std::ptrdiff_t solve_moved(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
@@ -274,7 +274,7 @@ HWY_NOINLINE std::ptrdiff_t solve_moved(D d, const hn::TFromD<D>* u_in, const hn
   answers<D> a = answer_cases(d, moved_u, moved_dy, L(hn::IfThenElse(answerable.m, phi, one)), answerable);
 
   // s moved back: exact where it is 0, or normal above the least binade
-  // before the move and normal after it (solve_stable's moved_back); the
+  // before the move and normal after it (solve_stable's move_back); the
   // others, subnormal or overflowing once moved back, go to solve_stable
   const auto s_bits = hn::BitCast(du, a.s.v);
   const auto s_magnitude = hn::And(s_bits, magnitude);
