@@ -1,6 +1,6 @@
 // The rescaled path of solve_stable (u and dy moved into the plain window by a
-// power of two, phi in the window) gives what solve_anywhere gives (for inputs
-// outside safe_window, solve_cases<false>, the scaled<T> path): the same s bit for bit and the same case, on inputs outside the
+// power of two, phi in the window) gives what by_safe_window gives (for inputs
+// outside safe_window, the exact stage on scaled<T>): the same s bit for bit and the same case, on inputs outside the
 // plain window, including results that are subnormal or overflow.
 #include <gtest/gtest.h>
 
@@ -24,20 +24,20 @@ template <class T>
 using bits = std::conditional_t<std::is_same_v<T, double>, std::uint64_t, std::uint32_t>;
 
 // What every input outside the bit-pattern window got before the rescaled
-// path: solve_anywhere, plain T inside safe_window (zeros), else scaled<T>.
+// path: by_safe_window, the plain stage inside safe_window (zeros), else the exact stage on scaled<T>.
 template <class T>
 contact::solution<T> old_route(const T& u, const T& dy, const T& phi) {
-  return contact::detail::solve_anywhere(u, dy, phi);
+  return contact::detail::by_safe_window(u, dy, phi);
 }
 
 template <class T>
-::testing::AssertionResult same_as_solve_anywhere(const T& u, const T& dy, const T& phi) {
+::testing::AssertionResult same_as_by_safe_window(const T& u, const T& dy, const T& phi) {
   const auto fast = contact::solve_stable(u, dy, phi), slow = old_route(u, dy, phi);
   if (fast.which == slow.which && std::bit_cast<bits<T>>(fast.s) == std::bit_cast<bits<T>>(slow.s))
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << std::hexfloat << "u=" << u << " dy=" << dy << " phi=" << phi
                                        << ": stable s=" << fast.s << " case " << int(fast.which)
-                                       << ", solve_anywhere s=" << slow.s << " case " << int(slow.which);
+                                       << ", by_safe_window s=" << slow.s << " case " << int(slow.which);
 }
 
 // A finite T with binade in [low, high] (subnormals below T's normal range), either sign.
@@ -121,7 +121,7 @@ void check_out_of_window(std::uint64_t seed, long count) {
         break;
       }
     }
-    const auto result = same_as_solve_anywhere(x.u, x.dy, x.phi);
+    const auto result = same_as_by_safe_window(x.u, x.dy, x.phi);
     if (!result) ++failures;
     EXPECT_TRUE(result);
   }
@@ -158,7 +158,7 @@ TEST(WindowRescale, EachRouteMatchesSolveAnywhere) {
       {1.0, 1.0, -1.0},              // invalid
       {0x1p-1074, 0x1p-1074, 2.0},   // subnormal u and dy
   };
-  for (const auto& in : inputs) EXPECT_TRUE(same_as_solve_anywhere(in[0], in[1], in[2]));
+  for (const auto& in : inputs) EXPECT_TRUE(same_as_by_safe_window(in[0], in[1], in[2]));
   EXPECT_EQ(contact::solve_stable(-max, max / 2, 1.0).s, std::numeric_limits<double>::infinity());
   EXPECT_EQ(contact::solve_stable(0x1p-300, 0x1p-301, 1.0).s, 0.0);
   EXPECT_EQ(contact::solve_stable(0x1p-1060, -0x1p-1070, 1.0).which, contact::contact_case::impact);

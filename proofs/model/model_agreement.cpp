@@ -4,7 +4,7 @@
 // path by hand. This test reads the model's computed expression `s`, evaluates
 // it in double with exactly the model's roundings (gappa_model.hpp), and
 // compares it bit for bit with the library's plain-path formula for that branch
-// on at least `per_branch` inputs that solve_cases<true> routes to it; and
+// on at least `per_branch` inputs that the plain stage (stage::plain) routes to it; and
 // with the solver's returned s, unless the model's value is on the wrong side
 // of dy (or below -u in impact), where a clamp must have changed it. A slip in
 // either the model or the code fails it.
@@ -45,7 +45,7 @@ struct branch {
   std::function<std::map<std::string, double>(const input<double>&)> model_inputs;
   // the library's plain-path formula for this branch
   std::function<double(const input<double>&)> code;
-  // whether the model's value needs no clamp in solve_cases
+  // whether the model's value needs no clamp in the plain stage
   std::function<bool(const input<double>&, double)> on_its_side;
   std::vector<input<double>> inputs;
 };
@@ -59,7 +59,7 @@ std::vector<branch> branches() {
   auto above_dy = [](const input<double>& x, double s) { return s > x.dy; };
   return {
       {"free", [](const input<double>& x) { return std::map<std::string, double>{{"u_", x.u}}; },
-       [](const input<double>& x) { return contact::detail::solve_cases<true>(x.u, x.dy, x.phi).s; },
+       [](const input<double>& x) { return contact::detail::stage::plain(x.u, x.dy, x.phi).s; },
        [](const input<double>&, double) { return true; }, {}},
       {"impact",
        [](const input<double>& x) {
@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
     while (short_of_inputs() && draws < 200 * per_branch) {
       const input<double> x = draw(source);
       ++draws;
-      auto& b = all[branch_index(x, contact::detail::solve_cases<true>(x.u, x.dy, x.phi).which)];
+      auto& b = all[branch_index(x, contact::detail::stage::plain(x.u, x.dy, x.phi).which)];
       if (b.inputs.size() < per_branch) b.inputs.push_back(x);
     }
 
@@ -355,7 +355,7 @@ int main(int argc, char** argv) {
       for (const auto& x : b.inputs) {
         const auto v = model_value(m, b, x);
         const double code = b.code(x);
-        const double solved = contact::detail::solve_cases<true>(x.u, x.dy, x.phi).s;
+        const double solved = contact::detail::stage::plain(x.u, x.dy, x.phi).s;
         bool ok = v && same_bits(*v, code);
         if (ok && !same_bits(*v, solved)) {
           ok = !b.on_its_side(x, *v);  // only a clamp may change the formula's value

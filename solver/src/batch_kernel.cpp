@@ -9,7 +9,7 @@
 // Two passes over each block of lanes. The first decides each lane's case and
 // answers free flight (any valid input); it packs the other lanes by what
 // they cost, as they are inside the common window, or moved by a power of two
-// into phi's band box (the band route of solve_stable). The second solves
+// into phi's band box (the moved stage of solve_stable). The second solves
 // each pack in whole vectors and moves s back. The rest (phi in no band, a
 // subnormal phi in float, u and dy too far apart, zero or subnormal u or dy,
 // an s that underflows or overflows once moved back, invalid input) go to
@@ -341,7 +341,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
 
 // The first pass over one vector at lane i: free flight answered (s = -u for
 // any valid input, written now); the other lanes that the vectors can take,
-// inside the common window or moved by phi's band (solve_stable's band route),
+// inside the common window or moved by phi's band (solve_stable's moved stage),
 // have their case decided as solve_stable decides it and are packed by it;
 // the rest are noted for solve_stable.
 template <class D>

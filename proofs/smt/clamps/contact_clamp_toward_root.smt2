@@ -1,5 +1,5 @@
 ; Claim: in case (A.31), when the computed s lies above dy, the clamp `s > dy ? dy : s`
-; (solve_cases, contact) does not move s away from the root t of (A.2): |dy - t| <= |s - t|,
+; (contact_clamped, contact) does not move s away from the root t of (A.2): |dy - t| <= |s - t|,
 ; because t <= dy (above dy, (A.2) times t is (t - dy)(t + dy + u) + dy (dy + u - phi dy) > 0).
 ; expect: unsat
 ; show: u dy phi t s

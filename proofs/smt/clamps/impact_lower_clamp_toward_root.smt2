@@ -1,5 +1,5 @@
 ; Claim: in case (A.30), when the computed s lies below -u, the clamp `s < -u ? -u : s`
-; (solve_cases, impact) does not move s away from the root t of (A.2): |-u - t| <= |s - t|,
+; (impact_clamped, impact) does not move s away from the root t of (A.2): |-u - t| <= |s - t|,
 ; because t >= -u (at t < -u every term of (A.2) times t is positive).
 ; expect: unsat
 ; show: u dy phi t s

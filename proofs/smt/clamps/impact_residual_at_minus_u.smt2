@@ -1,7 +1,7 @@
 ; Claim: in case (A.30) the residual of (A.2) at s = -u is <= 0:
 ; R(-u) = -u + u + phi q(-u) = -phi (dy + u)^2 / u. R is increasing (residual_increasing)
 ; and vanishes at the root, so the root is >= -u: the clamp `s < -u ? -u : s` in
-; solve_cases moves s towards it (impact_lower_clamp_toward_root proves the distance).
+; impact_clamped moves s towards it (impact_lower_clamp_toward_root proves the distance).
 ; expect: unsat
 ; show: u dy phi q
 (set-logic QF_NRA)

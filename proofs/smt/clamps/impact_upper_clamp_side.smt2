@@ -1,5 +1,5 @@
 ; Claim: in case (A.30), when the computed s is not below dy, the clamp
-; `s < dy ? s : next_down(dy)` (solve_cases, impact) puts s on the root's side: the
+; `s < dy ? s : next_down(dy)` (impact_clamped, impact) puts s on the root's side: the
 ; root t of (A.2) is < dy, so the clamped s1 = dy - g (g > 0 the distance to the next double
 ; below dy) either moves towards t without passing it (|s1 - t| <= |s - t|) or passes it,
 ; and then |s1 - t| < g, less than one spacing of the doubles at dy.

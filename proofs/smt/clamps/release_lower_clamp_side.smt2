@@ -1,5 +1,5 @@
 ; Claim: in case (A.32), when the computed s is not above dy, the clamp
-; `s > dy ? s : next_up(dy)` (solve_cases, release) puts s on the root's side: the
+; `s > dy ? s : next_up(dy)` (clamped_above_positive, release) puts s on the root's side: the
 ; root t of (A.2) is > dy, so the clamped s1 = dy + g (g > 0 the distance to the next double
 ; above dy) either moves towards t without passing it (|s1 - t| <= |s - t|) or passes it,
 ; and then |s1 - t| < g.

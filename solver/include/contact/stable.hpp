@@ -1,24 +1,24 @@
 // The stable closed form of (A.2).
 //
-// Each case formula below is derived from (A.2) itself (the printed summary
-// has misprints, see proofs/README.md) and written so that no step subtracts
-// nearly equal numbers. The formulas are templates on the arithmetic type:
-// plain T inside a window of exponents where no intermediate can overflow or
-// underflow, and scaled<T> (exact power-of-two rescaling at every step) outside
-// it. Both run the same operations on the same significands, so the window
-// changes speed, never the result (barring the final rounding of a result in
-// T's subnormal range).
-//
-// The case is decided exactly (the criteria are signs of exact sums), and s is
-// then forced onto the side of dy that its case claims: a rounding can move it
-// at most one ulp, onto dy itself, and the clamp moves it back.
+// Each case formula (stable_form) is derived from (A.2) itself (the printed
+// summary has misprints, see proofs/README.md) and written so that no step
+// subtracts nearly equal numbers. The case is decided exactly (the criteria are
+// signs of exact sums), and s is then clamped onto the side of dy that its case
+// claims: a rounding can move it at most one ulp, onto dy itself. solve_stable
+// runs the formulas in one of three stages (detail::stage, below): plain T where
+// no intermediate can overflow or underflow, the same after moving u and dy by
+// a power of two, or scaled<T> (exact rescaling at every step). They run the
+// same operations on the same significands, so the stage changes speed, never
+// the result (barring the final rounding of a result in T's subnormal range).
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 
 #include "cases.hpp"
 #include "detail/float_tools.hpp"
@@ -241,7 +241,7 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
     // Far from the boundary one term decides, exactly, without sorting the
     // terms. For float and double its binade tells (most inputs here lie
     // outside every phi band, u and dy hundreds of binades apart), before any
-    // scaled<T> is built: measured 22% fewer instructions on such contact and
+    // scaled<T> is built, which saves most of the work on such contact and
     // release inputs. Those it leaves undecided (phi dy rounding up to a power
     // of two among them) go straight to the exact sum.
     auto terms = [&] {
@@ -283,21 +283,7 @@ bool release_root_rounds_to_infinity(const T& u, const T& dy, const T& phi) {
   return sign_of_exact_sum(terms) <= 0;
 }
 
-template <bool plain, class T, class Formula>
-T evaluate(Formula formula, const T& x, const T& y, const T& phi) {
-  if constexpr (plain) {
-    return formula(x, y, phi);
-  } else {
-    using S = scaled<T>;
-    return formula(S(x), S(y), S(phi)).value();
-  }
-}
-
-}  // namespace detail
-
-namespace detail {
-
-// The clamps of solve_cases, the neighbours of dy as next_down and next_up
+// The clamps of the stages (below), the neighbours of dy as next_down and next_up
 // give them. For float and double a neighbour is one step of dy's bit pattern
 // away from zero (from -0 for dy = +0), cheap enough to compute whether or not
 // the clamp takes it, so that each clamp is one min or max (min_of, max_of):
@@ -321,7 +307,7 @@ T clamped_above_positive(const T& s, const T& dy) {  // dy > 0: s > dy, else nex
   }
 }
 
-// Each case's clamps onto its side of dy (solve_cases).
+// Each case's clamps onto its side of dy.
 template <class T>
 T impact_clamped(T s, const T& u, const T& dy) {
   // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
@@ -341,142 +327,180 @@ solution<T> free_flight(const T& u) {
   return {-u, contact_case::free};
 }
 
-// The four cases, once the input is valid and `plain` says whether plain T
-// arithmetic is safe (else the same formulas run on scaled<T>). u and dy may
-// be the input moved by an exact power of two (the band route); unmoved_u and
-// unmoved_dy are then the input itself, on which the signs of dy and u + dy
-// are the same and known sooner: on the band route the moved values come at
-// the end of a chain of integer operations, and a coin-toss branch on them
-// would be found mispredicted only at its end (measured: the route cost
-// about twice as much). Declared inline: GCC then inlines it into
-// solve_stable's common path whatever its other callers (measured: 50
-// instructions per physical input, against 64 with a call).
-template <bool plain, bool band_route = false, bool phi_is_subnormal = false, class T>
-inline solution<T> solve_cases(const T& u, const T& dy, const T& phi, const T& unmoved_u, const T& unmoved_dy) {
-  static_assert(plain || !phi_is_subnormal);
-  if (unmoved_dy <= 0) {
-    if constexpr (!band_route)  // the band route answers free flight before it moves u and dy
-      if (unmoved_u <= -unmoved_dy) return free_flight(u);
-    const T s = evaluate<plain>([](const auto&... x) { return stable_form::impact<phi_is_subnormal>(x...); }, u, T(-dy), phi);
-    return {impact_clamped(s, u, dy), contact_case::impact};
-  }
-  auto contact_answer = [&] {
-    const T s = evaluate<plain>([](const auto&... x) { return stable_form::contact<phi_is_subnormal>(x...); }, u, dy, phi);
-    return solution<T>{contact_clamped(s, dy), contact_case::contact};
-  };
-  if constexpr (plain) {
-    auto release_answer = [&] {
-      return solution<T>{clamped_above_positive(stable_form::release<phi_is_subnormal>(u, dy, phi), dy), contact_case::release};
-    };
-    if constexpr (band_route) {
-      // Contact or release is a coin toss too. On the band route the
-      // two-rounding estimate of the unmoved input (which may over- or
-      // underflow, so that it only guesses) takes the branch early; the exact
-      // decision on the moved input, late, only confirms it, and almost always
-      // does. (Where the input is not moved the guess would be the decision's
-      // own first step, twice: measured 8% slower on physical inputs.)
-      // An input the estimate leaves undecided comes back as `invalid` (no
-      // valid input's answer): the caller takes the exact decision out of
-      // line, so that this path makes no call that values must survive.
-      const auto factors = factors_of<phi_is_subnormal>(phi, unmoved_dy);  // unmoved = moved where phi is subnormal
-      const bool likely_contact = fused_multiply_add(-factors.phi, factors.x, T(unmoved_u + unmoved_dy)) > 0;
-      const int sign = estimated_contact_sign<phi_is_subnormal>(u, dy, phi);
-      if (likely_contact) {
-        if (sign > 0) [[likely]] return contact_answer();
-      } else {
-        if (sign < 0) [[likely]] return release_answer();
-      }
-      if (sign > 0) return contact_answer();
-      if (sign < 0) return release_answer();
-      return {T(0), contact_case::invalid};
-    } else {
-      if (stays_in_contact<plain>(u, dy, phi)) return contact_answer();
-      return release_answer();
-    }
-  } else {
-    if (stays_in_contact<plain>(u, dy, phi)) return contact_answer();
-    using S = scaled<T>;
-    const S root = stable_form::release(S(u), S(dy), S(phi));
-    T s = clamped_above_positive(root.value(), dy);
-    // A root a few ulps below the threshold of rounding to infinity (the
-    // largest T plus half its ulp) can be computed beyond it and round to
-    // infinity; the largest T is then the nearer, and only the exact sign of R
-    // at the threshold tells. A computed root from 2^(max_exponent + 1) up (a
-    // scaled exponent beyond max_exponent + 1) needs no such test: release's
-    // error bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
-    // With dy the largest T, release's side s > dy holds infinity alone.
-    // (Inside the plain window the root is below 2^(2E + 1), far from the largest T.)
-    using std::isinf;
-    if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 &&
-        !only_infinity_on_its_side(contact_case::release, dy) && !release_root_rounds_to_infinity(u, dy, phi))
-      s = (std::numeric_limits<T>::max)();
-    return {s, contact_case::release};
-  }
+// Each case's answer: its formula's s, clamped onto the case's side of dy.
+template <class T>
+solution<T> impact_answer(const T& s, const T& u, const T& dy) {
+  return {impact_clamped(s, u, dy), contact_case::impact};
 }
 
-template <bool plain, class T>
-solution<T> solve_cases(const T& u, const T& dy, const T& phi) {
-  return solve_cases<plain>(u, dy, phi, u, dy);
+template <class T>
+solution<T> contact_answer(const T& s, const T& dy) {
+  return {contact_clamped(s, dy), contact_case::contact};
 }
 
-// The scaled<T> path, out of line: its callers are fast paths that seldom need
-// it. By value: their arguments stay in registers, so a tail call can reach it.
-// For float and double flattened: scaled<T>'s operations, called a dozen to
-// a few dozen times, inline into it (measured, with the one-branch normal
-// case of scaled<T>::shifted: 1 to 13% less time per far-apart double input,
-// sorted by class); not for the multiprecision types, on which GCC 12
-// spends minutes and then fails (an internal error for cpp_bin_float_100).
+template <class T>
+solution<T> release_answer(const T& s, const T& dy) {
+  return {clamped_above_positive(s, dy), contact_case::release};
+}
+
+// The stages of solve_stable. Each gives the same s and case, bit for bit,
+// wherever it answers:
+//   plain  the case formulas in plain T, for a valid input on which no
+//          intermediate can overflow or underflow: the common path;
+//   moved  float and double outside the common window: u and dy moved by a
+//          power of two to where phi's band leaves room for them, solved as
+//          plain solves them, and s moved back;
+//   exact  the same formulas on scaled<T>: any other valid input.
+// by_safe_window, after exact, sends any input to plain or exact, or answers
+// it as invalid.
+namespace stage {
+
+// The plain stage: free flight, or the case's formula in plain T and its
+// clamp. Always inlined, so that solve_stable's common path holds it whole at
+// any optimisation level: its only call is the exact decision's, out of line,
+// for the few inputs within about an ulp of the contact/release boundary.
+template <class T>
+[[gnu::always_inline]] inline solution<T> plain(const T& u, const T& dy, const T& phi) {
+  if (dy <= 0) {
+    if (u <= -dy) return free_flight(u);
+    return impact_answer(stable_form::impact(u, T(-dy), phi), u, dy);
+  }
+  if (stays_in_contact<true>(u, dy, phi)) return contact_answer(stable_form::contact(u, dy, phi), dy);
+  return release_answer(stable_form::release(u, dy, phi), dy);
+}
+
+// The exact stage: plain's cases on scaled<T>, which rounds as T would with
+// an unbounded exponent range.
+template <class T>
+inline solution<T> exact_cases(const T& u, const T& dy, const T& phi) {
+  using S = scaled<T>;
+  if (dy <= 0) {
+    if (u <= -dy) return free_flight(u);
+    return impact_answer(stable_form::impact(S(u), S(T(-dy)), S(phi)).value(), u, dy);
+  }
+  if (stays_in_contact<false>(u, dy, phi)) return contact_answer(stable_form::contact(S(u), S(dy), S(phi)).value(), dy);
+  const S root = stable_form::release(S(u), S(dy), S(phi));
+  T s = clamped_above_positive(root.value(), dy);
+  // A root a few ulps below the threshold of rounding to infinity (the
+  // largest T plus half its ulp) can be computed beyond it and round to
+  // infinity; the largest T is then the nearer, and only the exact sign of R
+  // at the threshold tells. A computed root from 2^(max_exponent + 1) up (a
+  // scaled exponent beyond max_exponent + 1) needs no such test: release's
+  // error bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
+  // With dy the largest T, release's side s > dy holds infinity alone.
+  // (Inside the plain window the root is below 2^(2E + 1), far from the largest T.)
+  using std::isinf;
+  if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 &&
+      !only_infinity_on_its_side(contact_case::release, dy) && !release_root_rounds_to_infinity(u, dy, phi))
+    s = (std::numeric_limits<T>::max)();
+  return {s, contact_case::release};
+}
+
+// The exact stage out of line, as its callers seldom need it; by value, so
+// that the moved stage reaches it by a tail call with its arguments in
+// registers. For float and double flattened, so that scaled<T>'s operations,
+// called a few dozen times, inline into it; not for the multiprecision types,
+// whose operations are too large to inline so often.
 template <class T>
   requires hardware_binary<T>
-[[gnu::noinline, gnu::flatten]] solution<T> solve_scaled(T u, T dy, T phi) {
-  return solve_cases<false>(u, dy, phi);
+[[gnu::noinline, gnu::flatten]] solution<T> exact(T u, T dy, T phi) {
+  return exact_cases(u, dy, phi);
 }
 
 template <class T>
-[[gnu::noinline]] solution<T> solve_scaled(T u, T dy, T phi) {
-  return solve_cases<false>(u, dy, phi);
+[[gnu::noinline]] solution<T> exact(T u, T dy, T phi) {
+  return exact_cases(u, dy, phi);
 }
 
-// Any input: invalid ones, zeros, and magnitudes outside the plain window.
+}  // namespace stage
+
+// Any input: invalid input gets NaN and the case `invalid`; a valid one, the
+// plain stage inside safe_window, else the exact stage. The whole of
+// solve_stable for the types other than float and double.
 template <class T>
-solution<T> solve_anywhere(const T& u, const T& dy, const T& phi) {
+solution<T> by_safe_window(const T& u, const T& dy, const T& phi) {
   if (auto invalid = reject_invalid(u, dy, phi)) return *invalid;
-  if (safe_window<T>::holds(u, dy, phi)) return solve_cases<true>(u, dy, phi);
-  return solve_scaled(u, dy, phi);
+  if (safe_window<T>::holds(u, dy, phi)) return stage::plain(u, dy, phi);
+  return stage::exact(u, dy, phi);
 }
 
-// The band route's exit for phi = 0, phi from the end of the last band up and
-// invalid input (solve_by_phi_band, below), out of line and by value, so that
-// the route reaches it by a tail call.
+// The moved stage, for float and double. (A.2) is homogeneous in (u, dy):
+// s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi), with the same case. With phi > 0
+// finite, finite u and dy move by one exact power of two to where phi's band
+// (phi_bands) leaves room for them, the plain formulas solve them, and s moves
+// back. There plain T rounds as the unbounded exponent range of scaled<T> does
+// (docs/equations.md, section 6), and scaled<T> commutes with powers of two, so
+// this is the exact stage's answer wherever s is normal or zero both before and
+// after it moves back (the clamps' dy, -u and neighbours of dy scale with it:
+// dy is normal whenever its neighbour s is); elsewhere the exact stage rounds
+// it once. Each part below that is out of line takes its arguments by value
+// and is reached by a tail call, so that the stage's route saves no register
+// and spills nothing.
+namespace stage {
+
+// The moved stage's exit for phi = 0, phi from the end of the last band up and
+// invalid input, out of line, so that it is reached by a tail call.
 template <class T>
-  requires detail::hardware_binary<T>
-[[gnu::noinline]] solution<T> solve_outside_bands(T u, T dy, T phi) {
-  return solve_anywhere(u, dy, phi);
+  requires hardware_binary<T>
+[[gnu::noinline]] solution<T> outside_bands(T u, T dy, T phi) {
+  return by_safe_window(u, dy, phi);
 }
 
-// A moved s, normal, whose move back underflows: the scaled path's s, which
+// The cases of u and dy moved into phi's band, free flight answered before:
+// plain's formulas. Impact or not, and contact or release, are coin tosses on
+// such inputs; early_u and early_dy, the unmoved input where it is normal,
+// give the same signs of dy and u + dy sooner than the moved values, which
+// come at the end of a chain of integer operations (a branch on them would be
+// found mispredicted only at its end). So the two-rounding estimate of the
+// early input (which may over- or underflow, so that it only guesses) takes
+// the branch early; the pre-test of the moved input, late, only confirms it,
+// and almost always does. The few inputs the pre-test leaves undecided get no
+// answer here: the caller takes the exact decision out of line, so that this
+// path makes no call that values must survive. With phi_is_subnormal, the
+// products with phi are formed from normal factors (stable_form::impact_quotient).
+template <bool phi_is_subnormal, class T>
+inline std::optional<solution<T>> moved_cases(const T& u, const T& dy, const T& phi, const T& early_u,
+                                              const T& early_dy) {
+  if (early_dy <= 0) return impact_answer(stable_form::impact<phi_is_subnormal>(u, T(-dy), phi), u, dy);
+  auto contact = [&] { return contact_answer(stable_form::contact<phi_is_subnormal>(u, dy, phi), dy); };
+  auto release = [&] { return release_answer(stable_form::release<phi_is_subnormal>(u, dy, phi), dy); };
+  const auto factors = factors_of<phi_is_subnormal>(phi, early_dy);  // early = moved where phi is subnormal
+  const bool likely_contact = fused_multiply_add(-factors.phi, factors.x, T(early_u + early_dy)) > 0;
+  const int sign = estimated_contact_sign<phi_is_subnormal>(u, dy, phi);
+  if (likely_contact) {
+    if (sign > 0) [[likely]] return contact();
+  } else {
+    if (sign < 0) [[likely]] return release();
+  }
+  if (sign > 0) return contact();
+  if (sign < 0) return release();
+  return std::nullopt;
+}
+
+// A moved s, normal, whose move back underflows: the exact stage's s, which
 // rounds the same significand once into T's subnormals (scaled<T>::value()),
 // and then clamps it onto its case's side of dy. The clamps in the moved frame
 // change nothing here: each moves s toward a bound that moves with it, and
 // rounding keeps the order of s and that bound.
 template <class T>
-[[gnu::noinline]] solution<T> moved_back_below_normal(solution<T> inside, T u, T dy, int shift) {
-  const T s = scaled<T>::shifted(inside.s, -shift);
-  switch (inside.which) {
-    case contact_case::impact: return {impact_clamped(s, u, dy), inside.which};
-    case contact_case::contact: return {contact_clamped(s, dy), inside.which};
-    default: return {clamped_above_positive(s, dy), inside.which};  // release (free flight is answered unmoved)
+[[gnu::noinline]] solution<T> move_back_below_normal(T moved_s, contact_case which, T u, T dy, int shift) {
+  const T s = scaled<T>::shifted(moved_s, -shift);
+  switch (which) {
+    case contact_case::impact: return impact_answer(s, u, dy);
+    case contact_case::contact: return contact_answer(s, dy);
+    default: return release_answer(s, dy);  // release (free flight is answered unmoved)
   }
 }
 
-// The band route's last step: `inside`, the answer for u and dy moved by 2^shift, moved back.
+// The answer for u and dy moved by 2^shift (moved_s and which), moved back. Its
+// parts come as scalars, not as a solution<T>, so that they stay in registers.
 template <class T>
-[[gnu::always_inline]] inline solution<T> moved_back(const solution<T>& inside, T u, T dy, T phi, int shift) {
+[[gnu::always_inline]] inline solution<T> move_back(const T& moved_s, contact_case which, T u, T dy, T phi, int shift) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
   const bits offset = bits(shift) << layout::significand_bits;
-  const bits s_magnitude = std::bit_cast<bits>(inside.s) & ~layout::sign;
-  if (s_magnitude == 0) return inside;
+  const bits s_magnitude = std::bit_cast<bits>(moved_s) & ~layout::sign;
+  if (s_magnitude == 0) return {moved_s, which};
   // s normal both before and after the move: the exponent field moves, exactly
   // (a move beyond either end wraps or reaches the sign bit, which is_normal
   // refuses). The bands bound the intermediates, not the final division, so s
@@ -487,144 +511,130 @@ template <class T>
   const bool moved_normal = layout::is_normal(bits(s_magnitude - offset));
   const int moved_binade = int(s_magnitude >> layout::significand_bits) - layout::bias - shift;
   // Only a release root overflows (|s| < max(|u|, |dy|) in the other cases).
-  // From 2^(max_exponent + 1) up, the scaled path's s is infinite too, and its
+  // From 2^(max_exponent + 1) up, the exact stage's s is infinite too, and its
   // root, a few ulps from s, lies beyond the largest T: it keeps the infinity.
-  // A select, not a branch: in the extreme scene a quarter of the band route's
-  // release roots overflow, and the test waits for the root.
+  // A select, not a branch: the test would wait for the root, and on inputs
+  // of the whole range many release roots overflow.
   const bool overflows = moved_binade > std::numeric_limits<T>::max_exponent;
   if (inside_normal & (moved_normal | overflows)) [[likely]]
-    return {select(moved_normal, std::bit_cast<T>(bits(std::bit_cast<bits>(inside.s) - offset)), std::numeric_limits<T>::infinity()),
-            inside.which};
-  // s subnormal or zero once moved back (in the extreme scene, 3% of all
-  // inputs: u or dy subnormal): one rounding of the moved s, as the scaled path
-  // makes; in the binade just beyond the largest T, or where the moved s is
-  // not normal, the scaled path decides
+    return {select(moved_normal, std::bit_cast<T>(bits(std::bit_cast<bits>(moved_s) - offset)), std::numeric_limits<T>::infinity()),
+            which};
+  // s subnormal or zero once moved back (u or dy subnormal, mostly): one
+  // rounding of the moved s, as the exact stage makes; in the binade just
+  // beyond the largest T, or where the moved s is not normal, the exact stage decides
   if (inside_normal & (moved_binade < std::numeric_limits<T>::min_exponent - 1))
-    return moved_back_below_normal(inside, u, dy, shift);
-  return solve_scaled(u, dy, phi);
+    return move_back_below_normal(moved_s, which, u, dy, shift);
+  return exact(u, dy, phi);
 }
 
-// The band route for an input the estimate left undecided: the exact decision, out of line.
+// An input the pre-test left undecided: plain's exact decision, out of line.
 template <class T>
-[[gnu::noinline, gnu::flatten]] solution<T> solve_moved_exactly(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
-  return moved_back(solve_cases<true>(moved_u, moved_dy, phi, u, dy), u, dy, phi, shift);
+[[gnu::noinline, gnu::flatten]] solution<T> moved_exactly(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
+  const auto inside = plain(moved_u, moved_dy, phi);
+  return move_back(inside.s, inside.which, u, dy, phi, shift);
 }
 
-// The band route for a subnormal phi (the first band): the formulas form
-// their products with phi from normal factors (stable_form::impact_with_square_root),
-// out of line, as few inputs have one. Its moved u and dy, normal, stand for
-// the unmoved ones too. The pre-test (estimate_contact) always decides here,
-// so no input comes back undecided: with dy > 0 in binade e, a non-zero
-// u + dy is a multiple of 2^(e - p) (u near -dy lies in dy's binade or the
-// one below), so |fl(u + dy)| >= 2^(e - p), while phi dy < 2^(emin + e + 1)
-// lies below 2^(-p - 2) of it: the estimate is fl(u + dy) within far less
-// than the margin's eps |fl(u + dy)| of it; and where u + dy = 0 the margin
-// is 0 and the estimate -phi dy, normal in the band, is not.
+// A subnormal phi (the first band), out of line, as few inputs have one. The
+// moved u and dy, normal, stand for the unmoved ones too. The pre-test always
+// decides here: with dy > 0 in binade e, a non-zero u + dy is a multiple of
+// 2^(e - p) (u near -dy lies in dy's binade or the one below), so
+// |fl(u + dy)| >= 2^(e - p), while phi dy < 2^(emin + e + 1) lies below
+// 2^(-p - 2) of it: the estimate is fl(u + dy) within far less than the
+// margin's eps |fl(u + dy)| of it; and where u + dy = 0 the margin is 0 and
+// the estimate -phi dy, normal in the band, is not. (Were it ever undecided,
+// the exact stage would answer.)
 template <class T>
-[[gnu::noinline]] solution<T> solve_moved_subnormal_phi(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
-  return moved_back(solve_cases<true, true, true>(moved_u, moved_dy, phi, moved_u, moved_dy), u, dy, phi, shift);
+[[gnu::noinline]] solution<T> moved_subnormal_phi(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
+  const auto inside = moved_cases<true>(moved_u, moved_dy, phi, moved_u, moved_dy);
+  if (!inside) [[unlikely]] return exact(u, dy, phi);
+  return move_back(inside->s, inside->which, u, dy, phi, shift);
 }
 
-// The band route from the binades of the larger and the smaller non-zero one
+// The move itself, from the binades of the larger and the smaller non-zero one
 // of |u| and |dy| on; both_normal: u and dy are normal, and move on their bits.
 template <bool both_normal, class T>
-[[gnu::always_inline]] inline solution<T> solve_in_band(T u, T dy, T phi, int larger, int smaller) {
+[[gnu::always_inline]] inline solution<T> in_band(T u, T dy, T phi, int larger, int smaller) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
-  // (free flight is answered before: solve_by_phi_band)
   const auto band = phi_bands<T>::of_phi(phi);
   const int shift = band.top - 1 - larger;  // the larger of |u|, |dy| into [2^(top-1), 2^top)
-  // valid, and outside safe_window (a band holds all of it): the scaled path.
-  // An impact (dy <= 0 once free flight is answered) has a room of its own,
-  // as u is the larger: gap may lie far lower (a select: the case is a coin toss).
+  // u and dy too far apart for the band: valid, and outside safe_window (a band
+  // holds all of it), so the exact stage. An impact (dy <= 0 once free flight
+  // is answered) has a room of its own, as u is the larger: gap may lie far
+  // lower (a select: the case is a coin toss).
   static_assert(phi_bands<T>::holds_safe_window);
   // (and where phi is subnormal, gap 2^-64 stays exact: detail::subnormal_phi_factors)
   static_assert(phi_bands<T>::table[0].impact_lowest - 64 >= std::numeric_limits<T>::min_exponent);
-  if (smaller + shift < select(dy <= 0, band.impact_lowest, band.lowest)) return solve_scaled(u, dy, phi);
+  if (smaller + shift < select(dy <= 0, band.impact_lowest, band.lowest)) return exact(u, dy, phi);
   // the band puts both in its normal binades: for normal u and dy the move is exact on the exponent field
   const bits offset = bits(shift) << layout::significand_bits;
   const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
   const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
-  if (is_subnormal_phi(phi)) [[unlikely]] return solve_moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
-  // the unmoved signs decide sooner; a subnormal u or dy, though, would cost
-  // the early estimate a microcode assist, and the moved ones are normal
-  const solution<T> inside =
-      solve_cases<true, true>(moved_u, moved_dy, phi, both_normal ? u : moved_u, both_normal ? dy : moved_dy);
-  if (inside.which == contact_case::invalid) [[unlikely]] return solve_moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
-  return moved_back(inside, u, dy, phi, shift);
+  if (is_subnormal_phi(phi)) [[unlikely]] return moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
+  // a subnormal u or dy would cost the early estimate a microcode assist; the moved ones are normal
+  const auto inside = moved_cases<false>(moved_u, moved_dy, phi, both_normal ? u : moved_u, both_normal ? dy : moved_dy);
+  if (!inside) [[unlikely]] return moved_exactly(moved_u, moved_dy, u, dy, phi, shift);
+  return move_back(inside->s, inside->which, u, dy, phi, shift);
 }
 
-// The band route for zeros and subnormals (infinities and NaN go on), out of
-// line, so that the normal inputs' route makes no call but tail calls.
+// Zeros and subnormals (infinities and NaN go on), out of line, so that the
+// route of normal inputs makes no call but tail calls.
 template <class T>
-[[gnu::noinline]] solution<T> solve_by_phi_band_not_normal(T u, T dy, T phi) {
+[[gnu::noinline]] solution<T> moved_not_normal(T u, T dy, T phi) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
   constexpr bits infinite = std::bit_cast<bits>(std::numeric_limits<T>::infinity());
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
-  if (u_magnitude >= infinite || dy_magnitude >= infinite) return solve_anywhere(u, dy, phi);
+  if (u_magnitude >= infinite || dy_magnitude >= infinite) return by_safe_window(u, dy, phi);
   // (u and dy both zero is free flight, answered before)
   const int u_binade = u_magnitude == 0 ? binade_of(dy) : binade_of(u);
   const int dy_binade = dy_magnitude == 0 ? u_binade : binade_of(dy);
-  return solve_in_band<false>(u, dy, phi, std::max(u_binade, dy_binade), std::min(u_binade, dy_binade));
+  return in_band<false>(u, dy, phi, std::max(u_binade, dy_binade), std::min(u_binade, dy_binade));
 }
 
-// (A.2) is homogeneous in (u, dy): s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi),
-// with the same case. With phi > 0 finite, finite u and dy move by one exact
-// power of two to where phi's band (phi_bands) leaves room for them, the plain
-// path solves them, and s moves back. There plain T rounds as the unbounded
-// exponent range of scaled<T> does (docs/equations.md, section 6), and
-// scaled<T> commutes with powers of two, so this is solve_cases<false>'s
-// answer wherever s is normal or zero both before and after it moves back (the
-// clamps' dy, -u and neighbours of dy scale with it: dy is normal whenever its
-// neighbour s is). Where either s would be subnormal or 2^-k s overflow,
-// solve_cases<false> rounds it once, as before. Free flight is answered first,
-// for any finite u and dy. u and dy too far apart for the band take the
-// scaled path; phi = 0, phi from the end of the last band up and invalid
-// input go on to solve_anywhere. Every call it makes is a tail call to an
-// out-of-line function taking its arguments in registers, so that the route
-// itself saves no register and spills nothing (measured: 131 instructions per
-// input of the band route, against 153 with calls that values had to survive).
+// The moved stage's entry. Free flight needs no arithmetic, hence no band: it
+// is answered first, for any finite u and dy and valid phi (the answer
+// by_safe_window gives them), before the tests of phi and of zeros and
+// subnormals that it does not need (also for u and dy too far apart for any
+// band). One branch: the sign of dy is a coin toss. (phi = -0 is valid and
+// passes, as phi >= 0.) phi = 0 stays with by_safe_window: there scaled<T>'s
+// fma returns -u itself for s = -u = 0, a zero of the other sign than plain
+// T's fma gives.
 template <class T>
-  requires detail::hardware_binary<T>
-[[gnu::noinline, gnu::flatten]] solution<T> solve_by_phi_band(T u, T dy, T phi) {
+  requires hardware_binary<T>
+[[gnu::noinline, gnu::flatten]] solution<T> moved(T u, T dy, T phi) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
-  // free flight needs no arithmetic, hence no band: answered first, for any
-  // finite u and dy and valid phi (the answer solve_anywhere gives them),
-  // before the tests of phi and of zeros and subnormals that it does not need
-  // (38% of the extreme scene's inputs; also u and dy too far apart for any
-  // band). One branch: the sign of dy is a coin toss. (phi = -0 is valid and
-  // passes, as phi >= 0.) Measured: 4.8 -> 3.8 ns per free-flight input of
-  // the extreme scene, sorted by class (in shuffled order no gain shows).
   constexpr T infinity = std::numeric_limits<T>::infinity();
   if ((dy <= 0) & (u <= -dy) & (dy > -infinity) & (u > -infinity) & (phi >= 0) & (phi < infinity))
     return free_flight(u);
-  // phi = 0 stays with solve_anywhere: there scaled<T>'s fma returns -u itself
-  // for s = -u = 0, a zero of the other sign than plain T's fma gives
-  if (!(phi > 0) || !(phi < phi_bands<T>::end)) return solve_outside_bands(u, dy, phi);
+  if (!(phi > 0) || !(phi < phi_bands<T>::end)) return outside_bands(u, dy, phi);
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   if (!(layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude))) [[unlikely]]
-    return solve_by_phi_band_not_normal(u, dy, phi);
-  // max and min by arithmetic, as a compiler turns std::max into a branch
+    return moved_not_normal(u, dy, phi);
+  // max and min by arithmetic, as a compiler may turn std::max into a branch
   // here, and which of u, dy is larger is a coin toss
   const int u_binade = int(u_magnitude >> layout::significand_bits) - layout::bias;
   const int dy_binade = int(dy_magnitude >> layout::significand_bits) - layout::bias;
   const int spread = std::abs(u_binade - dy_binade);
   const int larger = (u_binade + dy_binade + spread) / 2;
-  return solve_in_band<true>(u, dy, phi, larger, larger - spread);
+  return in_band<true>(u, dy, phi, larger, larger - spread);
 }
+
+}  // namespace stage
 
 }  // namespace detail
 
+// Always inlined, with the plain stage, so that the common path runs in the
+// caller itself at any optimisation level; the other stages are calls.
 template <class T>
-solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
-  // the common input, tested on its bits: valid, non-zero, well inside the plain window
+[[gnu::always_inline]] inline solution<T> solve_stable(const T& u, const T& dy, const T& phi) {
   if constexpr (detail::hardware_binary<T>) {
-    if (detail::inside_common_window(u, dy, phi)) [[likely]] return detail::solve_cases<true>(u, dy, phi);
-    return detail::solve_by_phi_band(u, dy, phi);
+    // the common input, tested on its bits: valid, non-zero, well inside the plain window
+    if (detail::inside_common_window(u, dy, phi)) [[likely]] return detail::stage::plain(u, dy, phi);
+    return detail::stage::moved(u, dy, phi);
   } else {
-    return detail::solve_anywhere(u, dy, phi);
+    return detail::by_safe_window(u, dy, phi);
   }
 }
 

@@ -291,8 +291,8 @@ struct binary_layout {
     constexpr bits normal_span = bits((exponent_field << significand_bits) - least_normal);
     return bits(magnitude - least_normal) < normal_span;
   }
-  // Whether it is normal and above the least normal binade, likewise. The band
-  // route keeps a moved s only from there up: impact's quotient, which the
+  // Whether it is normal and above the least normal binade, likewise. The moved
+  // stage keeps a moved s only from there up: impact's quotient, which the
   // compensation corrects by less than 2^-50 of it, is then normal too
   // (proofs/gappa/window/impact_push_zero.g.in).
   static constexpr bits second_normal_binade = 2 * least_normal;
@@ -355,7 +355,7 @@ T select(bool condition, const T& if_true, const T& if_false) {
 // one of selects takes a compare, a mask and a blend and is slower, most on
 // impact inputs (two clamps), so the stable path clamps with these. Written
 // as intrinsics: GCC compiles the ?: form to minsd where it
-// stands alone, but into a branch inside the band route, which is slower on
+// stands alone, but into a branch inside the moved stage, which is slower on
 // the extreme scene's impact inputs.
 template <class T>
 T min_of(const T& a, const T& b) {
@@ -386,7 +386,7 @@ T max_of(const T& a, const T& b) {
 // x 2^-64), as a subnormal operand of a product or an fma costs a microcode
 // assist on many cores. phi 2^64 is formed from phi's bits, an integer that
 // converts exactly; x 2^-64 must be exact, which the callers with a subnormal
-// phi, the band route's first band and the batch's rescaled pass over it,
+// phi, the moved stage's first band and the batch's rescaled pass over it,
 // ensure (|x| >= 2^52 there: the first band's impact room in double, 2^23 in float).
 // `down` is 2^-64 where moved, else 1, and scales another factor the same way.
 template <class T>
@@ -403,7 +403,7 @@ bool is_subnormal_phi(const T& phi) {
   return bits(std::bit_cast<bits>(phi) - 1) < bits(binary_layout<T>::least_normal - 1);
 }
 
-// The factors where phi is known to be subnormal (the band route's subnormal-phi path).
+// The factors where phi is known to be subnormal (the moved stage's subnormal-phi path).
 template <class T>
   requires hardware_binary<T>
 normal_factors<T> subnormal_phi_factors(const T& phi, const T& x) {

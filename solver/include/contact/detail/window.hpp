@@ -1,6 +1,6 @@
 // The plain window: the exponent range inside which plain T arithmetic cannot
-// overflow or underflow in any stable formula. stable.hpp takes its plain path
-// inside it (and the phi bands' rescaled route outside it) and scaled<T> where
+// overflow or underflow in any stable formula. stable.hpp takes its plain stage
+// inside it (and the moved stage, by the phi bands, outside it) and scaled<T> where
 // neither serves; the common window (below), the first test of the stable path
 // and of the batch kernels, lies inside it; the fuzzers fold inputs into it;
 // docs/equations.md states the bound.
@@ -111,8 +111,8 @@ struct phi_bands {
   struct band {
     int top, lowest;
     // the least binade of gap = -dy when u, the larger, lies at top - 1: the
-    // impact formula's own room (impact's u > gap puts u at top - 1 on the band
-    // route), far below `lowest` where phi is small
+    // impact formula's own room (impact's u > gap puts u at top - 1 in the moved
+    // stage), far below `lowest` where phi is small
     int impact_lowest;
   };
   static constexpr int digits = std::numeric_limits<T>::digits;
@@ -161,8 +161,8 @@ struct phi_bands {
   }();
   // Whether every input of safe_window (u, dy, phi in binades -E .. E, E =
   // plain_window) fits its phi's band: the larger of u, dy moved to top - 1,
-  // the smaller, at most 2 E binades below, still at lowest or above. The band
-  // route then sends to the scaled path only inputs outside safe_window.
+  // the smaller, at most 2 E binades below, still at lowest or above. The moved
+  // stage then sends to the exact stage only inputs outside safe_window.
   static constexpr bool holds_safe_window = [] {
     constexpr int E = int(plain_window<T>);
     for (int j = 0; j < count; ++j)
@@ -190,7 +190,7 @@ bool inside_plain_window(const T& u, const T& dy, const T& phi) {
 // two, so the three offsets from the lower ends lie below 2^(2C) binades of bit
 // patterns iff their bitwise OR does: one comparison; phi's sign bit makes a
 // negative phi fail. Physical inputs lie inside; the rest of the plain window
-// takes the band route, whose plain path gives the same s.
+// takes the moved stage, which gives the same s.
 // double: C = 128, L = M = -128. float: C = 16 (the plain window, 24 binades
 // either side of 1, holds no 64), placed where audio-rate inputs lie: u and dy
 // from 2^-24 (displacements of 1e-7 to 1e-3 m: binades -24 to -11), phi from
