@@ -191,6 +191,20 @@ TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
   }
 }
 
+TEST(Batch, FloatEigenArraysEqualScalarStable) {
+  const auto in = inputs<float>(1000, 12);
+  const auto n = static_cast<long>(in.u.size());
+  contact::batch_array<float> u(n), dy(n), phi(n), s;
+  contact::batch_array<int> which;
+  for (long i = 0; i < n; ++i) u[i] = in.u[i], dy[i] = in.dy[i], phi[i] = in.phi[i];
+  contact::solve_batch(u, dy, phi, s, which);
+  for (long i = 0; i < n; ++i) {
+    const auto scalar = contact::solve_stable(in.u[i], in.dy[i], in.phi[i]);
+    EXPECT_TRUE(identical(scalar.s, s[i]));
+    EXPECT_EQ(static_cast<int>(scalar.which), which[i]);
+  }
+}
+
 // Whole vectors outside the window, in a band, after a vector inside it.
 TEST(Batch, WholeVectorsOutsideTheWindowAtTheEndEqualScalarStable) {
   lanes<double> in;

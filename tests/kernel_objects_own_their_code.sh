@@ -4,8 +4,7 @@
 # namespace contact::batch_kernels::<name>. Prints the offenders, if any.
 status=0
 for object in "$@"; do
-  name=$(basename "$(dirname "$(dirname "$object")")" .dir)  # contact_batch_<name>
-  name=${name#contact_batch_}
+  name=$(printf '%s\n' "$object" | sed -E 's#.*/contact_batch_([A-Za-z0-9_]+)\.dir/.*#\1#')  # .../contact_batch_<name>.dir/...
   defined=$(nm -C --defined-only "$object" | awk '$2 ~ /^[TtWw]$/ && $2 ~ /[TW]/')
   count=$(printf '%s\n' "$defined" | grep -c "contact::batch_kernels::$name::")
   offenders=$(printf '%s\n' "$defined" | grep -v "contact::batch_kernels::$name::" | grep -v '^$')

@@ -542,12 +542,12 @@ template <class T>
 // 2^(-p - 2) of it: the estimate is fl(u + dy) within far less than the
 // margin's eps |fl(u + dy)| of it; and where u + dy = 0 the margin is 0 and
 // the estimate -phi dy, normal in the band, is not. (Were it ever undecided,
-// the exact stage would answer.)
+// its NaN would take move_back to the exact stage, which would answer.)
 template <class T>
 [[gnu::noinline]] solution<T> moved_subnormal_phi(T moved_u, T moved_dy, T u, T dy, T phi, int shift) {
-  const auto inside = moved_cases<true>(moved_u, moved_dy, phi, moved_u, moved_dy);
-  if (!inside) [[unlikely]] return exact(u, dy, phi);
-  return move_back(inside->s, inside->which, u, dy, phi, shift);
+  const solution<T> inside = moved_cases<true>(moved_u, moved_dy, phi, moved_u, moved_dy)
+                                 .value_or(solution<T>{std::numeric_limits<T>::quiet_NaN(), contact_case::invalid});
+  return move_back(inside.s, inside.which, u, dy, phi, shift);
 }
 
 // The move itself, from the binades of the larger and the smaller non-zero one
