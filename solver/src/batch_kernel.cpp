@@ -469,7 +469,8 @@ HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, hn::Mask<D> lanes_o
 // normal after it (solve_stable's moved_back); `moved_back` is false on the
 // others, which underflow or overflow once moved back: solve_stable solves them.
 template <class D>
-HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back) {
+HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back,
+                              hn::Mask<D>& below_normal) {
   using layout = detail::binary_layout<hn::TFromD<D>>;
   using U = typename layout::bits;
   constexpr int significand_bits = layout::significand_bits;
@@ -495,6 +496,7 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
   const auto overflows = hn::And(hn::RebindMask(d, above_least_binade),
                                  hn::RebindMask(d, hn::Gt(moved_field, hn::Set(di, hn::TFromD<decltype(di)>(layout::exponent_field)))));
   moved_back = hn::Or(moved_back, overflows);
+  below_normal = hn::And(hn::RebindMask(d, above_least_binade), hn::RebindMask(d, hn::Lt(moved_field, hn::Set(di, 1))));
   return hn::IfThenElse(overflows, hn::CopySignToAbs(hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()), s.v), moved);
 }
 
@@ -571,11 +573,12 @@ HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 
 // The packed lanes' s by `answer`, written to their places (their cases are
 // written by the first pass); those whose s cannot move back, by
-// solve_stable. Returns how many those were.
-template <class D, class Answer>
+// solve_stable. Returns how many those were. `clamp` (s, u, dy) is the
+// lanes' clamp onto the side of dy of their case.
+template <class D, class Answer, class Clamp>
 HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
                                        const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
-                                       int* which_out, Answer answer) {
+                                       int* which_out, Answer answer, Clamp clamp) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   const hn::RebindToUnsigned<D> du;
@@ -588,7 +591,25 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
   for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
     L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
     auto moved_back = hn::FirstN(d, width);
-    if (lanes_in.moved) s = move_back(d, s, hn::Load(du, lanes_in.offset + k), moved_back);
+    if (lanes_in.moved) {
+      const L moved_s = s;
+      const auto offset = hn::Load(du, lanes_in.offset + k);
+      auto below_normal = hn::FirstN(d, 0);
+      s = move_back(d, s, offset, moved_back, below_normal);
+      if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
+        // an s that lands below the normal binades once moved back: rounded
+        // once there, as solve_stable's move_back_below_normal rounds it
+        // (scaled<T>), then clamped in the unmoved frame
+        const hn::RebindToSigned<D> di;
+        const scaled_lanes<D> x(moved_s);
+        const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
+        const L rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
+        const auto index = hn::Load(di, lanes_in.index + k);
+        const L clamped = clamp(rounded, L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index)));
+        s = hn::IfThenElse(below_normal, clamped.v, s.v);
+        moved_back = hn::Or(moved_back, below_normal);
+      }
+    }
     moved_back = hn::AndNot(hn::IsNaN(s.v), moved_back);  // (far lanes: a NaN s is one scaled_lanes did not carry)
     const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
     if (lanes_here == width) {
@@ -687,15 +708,19 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
     const auto phi_in_a_band =
         unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
-    const auto normal_in_band = hn::AndNot(hn::RebindMask(di, inside),
-                                           hn::RebindMask(di, hn::And(hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy)), phi_in_a_band)));
+    const auto finite_uv = hn::AndNot(hn::RebindMask(di, inside), hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy))));
+    const auto normal_in_band = hn::And(finite_uv, hn::RebindMask(di, phi_in_a_band));
     const auto too_far = hn::Lt(hn::Add(smaller, shift), least);
     const auto fits = hn::AndNot(too_far, normal_in_band);
-    // u and dy too far apart for the band: solve_stable's exact stage, on
-    // scaled_lanes, for the impacts, and for the contacts and releases whose
-    // case the dominant binade decides (detail::sign_of_dominant_binade, on
-    // the exponent fields); the others stay with solve_stable
-    const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::And(normal_in_band, too_far));
+    // u and dy too far apart for the band, or a finite phi beyond the last
+    // band (outside safe_window: safe_window<T>::holds bounds phi far below
+    // it): solve_stable's exact stage, on scaled_lanes, for the impacts, and
+    // for the contacts and releases whose case the dominant binade decides
+    // (detail::sign_of_dominant_binade, on the exponent fields); the others
+    // stay with solve_stable
+    static_assert(detail::plain_window<T> < fields::bands::last_phi_binade);
+    const auto beyond_bands = hn::RebindMask(di, hn::And(hn::Ge(phi, hn::Set(d, fields::bands::end)), hn::IsFinite(phi)));
+    const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands)));
     if (!hn::AllFalse(di, far)) [[unlikely]] {
       const auto phi_field = read_normal(d, hn::And(phi_bits, magnitude)).field;
       const auto product_field = hn::Sub(hn::Add(phi_field, dy_field), hn::Set(di, layout::bias));  // phi dy in [2^field, 2^(field + 2))
@@ -809,20 +834,27 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
     for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, sorted);
-    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); });
-    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); });
+    using L = lanes<D>;
+    auto root_clamp = [](L s, L u, L dy) { return select(dy <= L(0), detail::impact_clamped(s, u, dy), detail::clamped_above_positive(s, dy)); };
+    auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
+    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); }, root_clamp);
+    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
+                         contact_clamp);
     if (sorted.roots_of_subnormal_phi.count != 0)
       left += solve_packed(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_roots<D, true>(x...); });
+                           [](auto... x) { return answer_roots<D, true>(x...); }, root_clamp);
     if (sorted.contacts_of_subnormal_phi.count != 0)
       left += solve_packed(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_contacts<D, true>(x...); });
+                           [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
     if (sorted.far_impacts.count != 0)
-      left += solve_packed(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); });
+      left += solve_packed(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
+                           root_clamp);
     if (sorted.far_contacts.count != 0)
-      left += solve_packed(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); });
+      left += solve_packed(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
+                           contact_clamp);
     if (sorted.far_releases.count != 0)
-      left += solve_packed(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); });
+      left += solve_packed(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
+                           root_clamp);
     packed_lanes<T>& scalar = sorted.scalar;
     for (std::ptrdiff_t k = 0; k < scalar.count; ++k) {
       const auto lane = static_cast<std::ptrdiff_t>(scalar.index[k]);
