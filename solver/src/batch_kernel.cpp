@@ -141,6 +141,228 @@ HWY_INLINE hn::Mask<DU> unsigned_less(DU du, hn::Vec<DU> a, hn::Vec<DU> b) {
   return hn::RebindMask(du, hn::Lt(hn::BitCast(di, hn::Xor(a, top)), hn::BitCast(di, hn::Xor(b, top))));
 }
 
+// A non-negative finite magnitude (bits) as a normal value of T's lanes of
+// the same significand, and the exponent field the magnitude would have with
+// an unbounded exponent range: a subnormal's significand field is an integer
+// k, which converts exactly, and the magnitude is k 2^-(bias - 1 +
+// significand_bits) (as scaled<T> reads it; a product by a power of two would
+// cost a microcode assist). Zero reads as zero, of field 0 - that offset.
+template <class D>
+struct normal_reading {
+  hn::Vec<D> value;
+  hn::Vec<hn::RebindToSigned<D>> field;
+};
+
+template <class D>
+HWY_INLINE normal_reading<D> read_normal(D d, hn::Vec<hn::RebindToUnsigned<D>> magnitude) {
+  using layout = detail::binary_layout<hn::TFromD<D>>;
+  using U = typename layout::bits;
+  const hn::RebindToUnsigned<D> du;
+  const hn::RebindToSigned<D> di;
+  constexpr int integer_offset = layout::bias - 1 + layout::significand_bits;
+  const auto subnormal = hn::RebindMask(d, hn::Not(unsigned_less(du, hn::Set(du, U(layout::least_normal - 1)), magnitude)));
+  const auto value = hn::IfThenElse(subnormal, hn::ConvertTo(d, hn::BitCast(di, magnitude)), hn::BitCast(d, magnitude));
+  const auto field = hn::BitCast(di, hn::ShiftRight<layout::significand_bits>(hn::BitCast(du, value)));
+  return {value, hn::IfThenElse(hn::RebindMask(di, subnormal), hn::Sub(field, hn::Set(di, integer_offset)), field)};
+}
+
+// detail::scaled<T> on lanes: a significand of T's lanes in [0.5, 1) (or 0)
+// and an exponent of integer lanes of T's width, for the lanes too far apart
+// for any band, which solve_stable takes to its exact stage. Each operation
+// below is scaled<T>'s, written with selects instead of branches, and gives
+// its significand and exponent bit for bit: the significand operations are
+// T's, and the moves by powers of two round once where scaled<T>::shifted
+// does (a product by a normal power of two, exact unless its result is
+// subnormal, rounds once as ldexp does). A lane whose operands leave what
+// these cover (a NaN or infinite significand) ends with a NaN significand,
+// and solve_stable takes it.
+template <class D>
+struct scaled_lanes {
+  using lane_scalar = hn::TFromD<D>;  // a lane_vector: stable_form selects on it instead of branching
+  using T = lane_scalar;
+  using layout = detail::binary_layout<T>;
+  using U = typename layout::bits;
+  // The exponent is an integer held in T's own lanes (exact: far below
+  // 2^digits), so that its sums, comparisons and selects are T's, which every
+  // target has for 64-bit lanes, where AVX2 lacks 64-bit integer min, max and
+  // arithmetic shifts.
+  hn::Vec<D> significand, exponent;
+
+  scaled_lanes() = default;
+  scaled_lanes(hn::Vec<D> m, hn::Vec<D> e) : significand(m), exponent(e) {}
+  explicit scaled_lanes(lanes<D> x) : scaled_lanes(normalized<true>(x.v, hn::Zero(D()))) {}
+  explicit scaled_lanes(int x) : scaled_lanes(lanes<D>(x)) {}
+
+  static constexpr int significand_bits = layout::significand_bits;
+  static constexpr T half_field = T(layout::bias - 1);  // the exponent field of a significand in [0.5, 1)
+  static constexpr int lift = std::numeric_limits<T>::digits + 11;  // 2^-lift moves a product down by one rounding
+  // An integer n, |n| < 2^(significand_bits - 1), plus `integral` has n + 2^(significand_bits - 1)
+  // as its significand field: the integer's bits are read off (and written into) that field.
+  static constexpr T integral = T(3) * T(U(1) << (significand_bits - 1));
+
+  static HWY_INLINE hn::Vec<D> set(T x) { return hn::Set(D(), x); }
+  // n 2^significand_bits as bits, two's complement (the offset 2^(significand_bits - 1)
+  // moves out beyond the top bit)
+  static HWY_INLINE hn::Vec<hn::RebindToUnsigned<D>> field_bits(hn::Vec<D> n) {
+    return hn::ShiftLeft<significand_bits>(hn::BitCast(hn::RebindToUnsigned<D>(), hn::Add(n, set(integral))));
+  }
+  static HWY_INLINE hn::Vec<D> power_of_two(hn::Vec<D> k) { return hn::BitCast(D(), field_bits(hn::Add(k, set(T(layout::bias))))); }
+  static HWY_INLINE hn::Vec<D> field_of(hn::Vec<D> x) {  // the exponent field of x's bits, as a value
+    const hn::RebindToUnsigned<D> du;
+    const auto field = hn::And(hn::ShiftRight<significand_bits>(hn::BitCast(du, x)), hn::Set(du, U(layout::exponent_field)));
+    return hn::Sub(hn::BitCast(D(), hn::Or(field, hn::BitCast(du, set(integral)))), set(integral));
+  }
+
+  // scaled<T>::normalized(m, e): zero, infinity and NaN keep their
+  // significand and get exponent 0; a subnormal m = k 2^-offset is read as
+  // the integer k (read_normal), as scaled<T> reads it. Only an input can be
+  // subnormal: a sum or an fma of aligned significands in [0.5, 1) is zero
+  // or a multiple of 2^-(3 digits + 4), far above the subnormals.
+  template <bool may_be_subnormal = false>
+  static HWY_INLINE scaled_lanes normalized(hn::Vec<D> m, hn::Vec<D> e) {
+    const D d;
+    const hn::RebindToUnsigned<D> du;
+    auto field = field_of(m);
+    const auto subnormal = hn::And(hn::Eq(field, hn::Zero(d)), hn::Ne(m, hn::Zero(d)));
+    if (may_be_subnormal && !hn::AllFalse(d, subnormal)) [[unlikely]] {
+      constexpr int integer_offset = layout::bias - 1 + significand_bits;
+      m = hn::IfThenElse(subnormal, hn::CopySignToAbs(read_normal(d, hn::AndNot(hn::Set(du, layout::sign), hn::BitCast(du, m))).value, m), m);
+      e = hn::IfThenElse(subnormal, hn::Sub(e, set(T(integer_offset))), e);
+      field = field_of(m);
+    }
+    const auto kept = hn::Or(hn::Eq(field, hn::Zero(d)), hn::Eq(field, set(T(layout::exponent_field))));  // zero, infinity, NaN
+    const auto cleared = hn::AndNot(hn::Set(du, U(U(layout::exponent_field) << significand_bits)), hn::BitCast(du, m));
+    const auto in_half = hn::BitCast(d, hn::Or(cleared, hn::Set(du, U(U(layout::bias - 1) << significand_bits))));
+    return {hn::IfThenElse(kept, m, in_half), hn::IfThenElseZero(hn::Not(kept), hn::Add(e, hn::Sub(field, set(half_field))))};
+  }
+
+  // A significand aligned to a term `shift` <= 0 binades above it, where it
+  // is added to that term (or to a product of two significands, in an fma):
+  // x 2^shift, exact, down to 2^-(2 digits + 4). Below that the sum rounds as
+  // it would with scaled<T>::shifted's tiny or subnormal value, as both lie
+  // below half the least bit of the other term's exact value (2^-(2 digits) of
+  // a product): the sum depends only on the sign of a non-zero one. Where
+  // scaled<T>::shifted rounds x 2^shift to zero (`to_zero`), an fma must add
+  // zero instead. No operand or result here is subnormal, which would cost
+  // each vector a microcode assist.
+  static HWY_INLINE hn::Vec<D> aligned(hn::Vec<D> x, hn::Vec<D> shift) {
+    return hn::Mul(x, power_of_two(hn::Max(shift, set(T(-2 * std::numeric_limits<T>::digits - 4)))));
+  }
+  static HWY_INLINE hn::Mask<D> to_zero(hn::Vec<D> x, hn::Vec<D> shift) {
+    constexpr T least = T(std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits);
+    // x 2^shift <= 2^(least - 1), half the least subnormal: the tie goes to the even zero
+    return hn::Or(hn::Lt(shift, set(least)), hn::And(hn::Eq(shift, set(least)), hn::Eq(hn::Abs(x), set(T(0.5)))));
+  }
+
+  // scaled<T>::shifted(x, shift) for shift <= 0: x 2^shift, rounded once (a
+  // product by 2^(shift + lift), exact and normal, then by 2^-lift: the
+  // vectors that hold such a lane pay an assist), zero where to_zero
+  static HWY_INLINE hn::Vec<D> shifted_down(hn::Vec<D> x, hn::Vec<D> shift) {
+    constexpr T least = T(std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits);
+    const auto k = hn::Min(hn::Max(shift, set(least)), hn::Zero(D()));
+    const auto rounded = hn::Mul(hn::Mul(x, power_of_two(hn::Add(k, set(T(lift))))), power_of_two(set(T(-lift))));
+    return hn::IfThenElse(to_zero(x, shift), hn::CopySignToAbs(hn::Zero(D()), x), rounded);
+  }
+
+  // scaled<T>::value(): m 2^e in T, rounded once: a normal result on the
+  // exponent field, a subnormal one (or zero) by shifted_down, infinity
+  // beyond the largest binade
+  HWY_INLINE hn::Vec<D> value() const {
+    const D d;
+    const hn::RebindToUnsigned<D> du;
+    const auto least = set(T(std::numeric_limits<T>::min_exponent)), largest = set(T(std::numeric_limits<T>::max_exponent));
+    auto finite = hn::BitCast(d, hn::Add(hn::BitCast(du, significand), field_bits(exponent)));
+    const auto below_normal = hn::Lt(exponent, least);
+    if (!hn::AllFalse(d, below_normal)) [[unlikely]]
+      finite = hn::IfThenElse(below_normal, shifted_down(significand, hn::Min(exponent, hn::Zero(d))), finite);
+    const auto infinite = hn::CopySignToAbs(set(std::numeric_limits<T>::infinity()), significand);
+    return hn::IfThenElse(hn::Or(lost(), hn::Eq(significand, hn::Zero(d))), significand,
+                          hn::IfThenElse(hn::Gt(exponent, largest), infinite, finite));
+  }
+
+  // the lanes this representation did not carry (a NaN or infinite significand)
+  HWY_INLINE hn::Mask<D> lost() const { return hn::Not(hn::IsFinite(significand)); }
+
+  friend HWY_INLINE scaled_lanes select(lane_mask<D> condition, scaled_lanes a, scaled_lanes b) {
+    return {hn::IfThenElse(condition.m, a.significand, b.significand), hn::IfThenElse(condition.m, a.exponent, b.exponent)};
+  }
+  friend HWY_INLINE scaled_lanes operator-(scaled_lanes a) { return {hn::Neg(a.significand), a.exponent}; }
+  // A product of two significands lies in [0.25, 1) and a quotient in
+  // (0.5, 2) (each rounds to neither end): normalized by one step, which
+  // keeps the chain of dependent operations short; a zero gets exponent 0,
+  // and NaN and infinity stay.
+  friend HWY_INLINE scaled_lanes operator*(scaled_lanes a, scaled_lanes b) {
+    const D d;
+    const auto product = hn::Mul(a.significand, b.significand);
+    const auto low = hn::Lt(hn::Abs(product), set(T(0.5)));
+    return {hn::IfThenElse(low, hn::Add(product, product), product),
+            hn::IfThenElseZero(hn::Ne(product, hn::Zero(d)), hn::Sub(hn::Add(a.exponent, b.exponent), hn::IfThenElseZero(low, set(T(1)))))};
+  }
+  friend HWY_INLINE scaled_lanes operator/(scaled_lanes a, scaled_lanes b) {
+    const D d;
+    const auto quotient = hn::Div(a.significand, b.significand);
+    const auto high = hn::Ge(hn::Abs(quotient), set(T(1)));
+    return {hn::IfThenElse(high, hn::Mul(quotient, set(T(0.5))), quotient),
+            hn::IfThenElseZero(hn::Ne(quotient, hn::Zero(d)), hn::Add(hn::Sub(a.exponent, b.exponent), hn::IfThenElseZero(high, set(T(1)))))};
+  }
+  // both aligned to the larger exponent (one of them by 2^0); a zero term gives the other
+  friend HWY_INLINE scaled_lanes operator+(scaled_lanes a, scaled_lanes b) {
+    const D d;
+    const auto top = hn::Max(a.exponent, b.exponent);
+    const scaled_lanes sum = normalized(hn::Add(aligned(a.significand, hn::Sub(a.exponent, top)), aligned(b.significand, hn::Sub(b.exponent, top))), top);
+    return select(lane_mask<D>{hn::Eq(b.significand, hn::Zero(d))}, a, select(lane_mask<D>{hn::Eq(a.significand, hn::Zero(d))}, b, sum));
+  }
+  friend HWY_INLINE scaled_lanes operator-(scaled_lanes a, scaled_lanes b) { return a + (-b); }
+  friend HWY_INLINE lane_mask<D> operator>(scaled_lanes a, scaled_lanes b) { return {hn::Gt((a - b).significand, hn::Zero(D()))}; }
+
+  // a b + c rounded once: c aligned to the product, or the product's second
+  // factor to c where c is the larger; a zero factor gives c
+  friend HWY_INLINE scaled_lanes fused_multiply_add(scaled_lanes a, scaled_lanes b, scaled_lanes c) {
+    const D d;
+    const auto product_exponent = hn::Add(a.exponent, b.exponent);
+    const auto c_larger = hn::And(hn::Lt(product_exponent, c.exponent), hn::Ne(c.significand, hn::Zero(d)));
+    // (a zero c, of exponent 0, may lie above the product: it stays zero)
+    const auto smaller = hn::IfThenElse(c_larger, b.significand, c.significand);
+    const auto shift = hn::Min(hn::IfThenElse(c_larger, hn::Sub(product_exponent, c.exponent), hn::Sub(c.exponent, product_exponent)),
+                               hn::Zero(d));
+    // an addend that scaled<T> rounds to zero is zero; a factor whose product
+    // lies below a quarter of c's ulp leaves c as it is either way
+    const auto moved = hn::IfThenElse(to_zero(smaller, shift), hn::CopySignToAbs(hn::Zero(d), smaller), aligned(smaller, shift));
+    const scaled_lanes fused = normalized(hn::MulAdd(a.significand, hn::IfThenElse(c_larger, moved, b.significand),
+                                                     hn::IfThenElse(c_larger, c.significand, moved)),
+                                          hn::IfThenElse(c_larger, c.exponent, product_exponent));
+    const auto zero_factor = hn::Or(hn::Eq(a.significand, hn::Zero(d)), hn::Eq(b.significand, hn::Zero(d)));
+    return select(lane_mask<D>{zero_factor}, c, fused);
+  }
+
+  // rounded to nearest: an odd exponent moves the significand into [0.25, 0.5)
+  friend HWY_INLINE scaled_lanes square_root(scaled_lanes a) {
+    const D d;
+    const hn::RebindToUnsigned<D> du;
+    const auto odd = hn::RebindMask(d, hn::Ne(hn::And(hn::BitCast(du, hn::Add(a.exponent, set(integral))), hn::Set(du, U(1))), hn::Zero(du)));
+    const auto m = hn::IfThenElse(odd, hn::Mul(a.significand, set(T(0.5))), a.significand);
+    const auto even = hn::IfThenElse(odd, hn::Add(a.exponent, set(T(1))), a.exponent);
+    // the root of [0.25, 1) lies in [0.5, 1); of zero, zero, and of a negative, NaN (exponent 0)
+    const auto non_positive = hn::Le(a.significand, hn::Zero(d));
+    return {hn::Sqrt(hn::IfThenElse(non_positive, a.significand, m)), hn::IfThenElseZero(hn::Not(non_positive), hn::Mul(even, set(T(0.5))))};
+  }
+
+  // detail::two_sum on scaled<T>: one alignment; the smaller below half an
+  // ulp of the larger is the error itself; a zero term gives the sum and zero
+  friend HWY_INLINE detail::exact_pair<scaled_lanes> two_sum(scaled_lanes a, scaled_lanes b) {
+    const D d;
+    const auto a_larger = lane_mask<D>{hn::Ge(a.exponent, b.exponent)};
+    const scaled_lanes large = select(a_larger, a, b), small = select(a_larger, b, a);
+    const auto gap = hn::Sub(large.exponent, small.exponent);
+    const auto pair = detail::two_sum(lanes<D>(large.significand), lanes<D>(aligned(small.significand, hn::Neg(gap))));
+    const scaled_lanes high = normalized(pair.high.v, large.exponent), low = normalized(pair.low.v, large.exponent);
+    const auto apart = lane_mask<D>{hn::Gt(gap, set(T(std::numeric_limits<T>::digits + 1)))};
+    const auto zero_term = lane_mask<D>{hn::Or(hn::Eq(a.significand, hn::Zero(d)), hn::Eq(b.significand, hn::Zero(d)))};
+    return {select(zero_term, select(lane_mask<D>{hn::Eq(a.significand, hn::Zero(d))}, b, a), select(apart, large, high)),
+            select(zero_term, scaled_lanes(hn::Zero(d), hn::Zero(d)), select(apart, small, low))};
+  }
+};
+
 // phi_bands<T>' table in units of the exponent field, for the lanes' gathers:
 // per band, the field of 2^(top - 1) (where the larger of |u|, |dy| moves) and
 // the least fields the smaller may then have, for contact and release
@@ -206,6 +428,7 @@ inline constexpr auto compaction_orders = [] {
 template <class T>
 struct sorted_lanes {
   packed_lanes<T> roots, contacts, roots_of_subnormal_phi, contacts_of_subnormal_phi, scalar;
+  packed_lanes<T> far_impacts, far_contacts, far_releases;  // u and dy too far apart for the band, unmoved
 };
 
 template <class D>
@@ -246,7 +469,8 @@ HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, hn::Mask<D> lanes_o
 // normal after it (solve_stable's moved_back); `moved_back` is false on the
 // others, which underflow or overflow once moved back: solve_stable solves them.
 template <class D>
-HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back) {
+HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back,
+                              hn::Mask<D>& below_normal) {
   using layout = detail::binary_layout<hn::TFromD<D>>;
   using U = typename layout::bits;
   constexpr int significand_bits = layout::significand_bits;
@@ -260,8 +484,20 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
   const auto normal_once_moved =
       unsigned_less(du, hn::Sub(hn::Sub(s_magnitude, offset), hn::Set(du, layout::least_normal)),
                     hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal)));
+  const auto moved = hn::IfThenElse(hn::RebindMask(d, unmoved), s.v, hn::BitCast(d, hn::Sub(s_bits, offset)));
   moved_back = hn::RebindMask(d, hn::Or(unmoved, hn::And(above_least_binade, normal_once_moved)));
-  return hn::IfThenElse(hn::RebindMask(d, unmoved), s.v, hn::BitCast(d, hn::Sub(s_bits, offset)));
+  if (hn::AllTrue(d, moved_back)) [[likely]] return moved;
+  // a release root from 2^(max_exponent + 1) up once moved back: infinity, as
+  // solve_stable's move_back gives it (the binade 2^max_exponent, just beyond
+  // the largest T, stays with solve_stable)
+  const hn::RebindToSigned<D> di;
+  const auto moved_field = hn::Sub(hn::BitCast(di, hn::ShiftRight<significand_bits>(s_magnitude)),
+                                   hn::ShiftRight<significand_bits>(hn::BitCast(di, offset)));
+  const auto overflows = hn::And(hn::RebindMask(d, above_least_binade),
+                                 hn::RebindMask(d, hn::Gt(moved_field, hn::Set(di, hn::TFromD<decltype(di)>(layout::exponent_field)))));
+  moved_back = hn::Or(moved_back, overflows);
+  below_normal = hn::And(hn::RebindMask(d, above_least_binade), hn::RebindMask(d, hn::Lt(moved_field, hn::Set(di, 1))));
+  return hn::IfThenElse(overflows, hn::CopySignToAbs(hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()), s.v), moved);
 }
 
 // (A.30) and (A.32): the impacts (dy <= 0) and the releases of `lanes`, each
@@ -295,13 +531,54 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return detail::contact_clamped(lanes<D>(contact.numerator / contact.denominator), dy);
 }
 
+// The exact stage (detail::stage::exact) of the lanes too far apart for the
+// band, each case on scaled_lanes; a lane scaled_lanes did not carry, or a
+// release root that rounds to infinity below 2^(max_exponent + 2) (only the
+// exact sign at the threshold tells it), gets NaN: solve_stable solves it.
+// x's value in T, NaN on the lanes x did not carry
+template <class D>
+HWY_INLINE lanes<D> value_of(const scaled_lanes<D>& x) {
+  return hn::IfThenElse(x.lost(), hn::Set(D(), std::numeric_limits<hn::TFromD<D>>::quiet_NaN()), x.value());
+}
+
+// the clamped s where the value was a number (x86's min and max give their
+// second operand where either is NaN: a clamp may turn NaN into a number)
+template <class D>
+HWY_INLINE lanes<D> where_carried(lanes<D> value, lanes<D> s) { return hn::IfThenElse(hn::IsNaN(value.v), value.v, s.v); }
+
+template <class D>
+HWY_INLINE lanes<D> far_impacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  using S = scaled_lanes<D>;
+  const auto value = value_of(stable_form::impact(S(u), S(-dy), S(phi)));
+  return where_carried(value, detail::impact_clamped(value, u, dy));
+}
+
+template <class D>
+HWY_INLINE lanes<D> far_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  using S = scaled_lanes<D>;
+  const auto value = value_of(stable_form::contact(S(u), S(dy), S(phi)));
+  return where_carried(value, detail::contact_clamped(value, dy));
+}
+
+template <class D>
+HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  using S = scaled_lanes<D>;
+  using T = hn::TFromD<D>;
+  const S root = stable_form::release(S(u), S(dy), S(phi));
+  const auto value = value_of(root);
+  const auto s = where_carried(value, detail::clamped_above_positive(value, dy));
+  const auto near_threshold = hn::Not(hn::Gt(root.exponent, hn::Set(D(), T(std::numeric_limits<T>::max_exponent + 1))));
+  return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
+}
+
 // The packed lanes' s by `answer`, written to their places (their cases are
 // written by the first pass); those whose s cannot move back, by
-// solve_stable. Returns how many those were.
-template <class D, class Answer>
+// solve_stable. Returns how many those were. `clamp` (s, u, dy) is the
+// lanes' clamp onto the side of dy of their case.
+template <class D, class Answer, class Clamp>
 HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
                                        const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
-                                       int* which_out, Answer answer) {
+                                       int* which_out, Answer answer, Clamp clamp) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   const hn::RebindToUnsigned<D> du;
@@ -314,7 +591,26 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
   for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
     L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
     auto moved_back = hn::FirstN(d, width);
-    if (lanes_in.moved) s = move_back(d, s, hn::Load(du, lanes_in.offset + k), moved_back);
+    if (lanes_in.moved) {
+      const L moved_s = s;
+      const auto offset = hn::Load(du, lanes_in.offset + k);
+      auto below_normal = hn::FirstN(d, 0);
+      s = move_back(d, s, offset, moved_back, below_normal);
+      if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
+        // an s that lands below the normal binades once moved back: rounded
+        // once there, as solve_stable's move_back_below_normal rounds it
+        // (scaled<T>), then clamped in the unmoved frame
+        const hn::RebindToSigned<D> di;
+        const scaled_lanes<D> x(moved_s);
+        const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
+        const L rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
+        const auto index = hn::Load(di, lanes_in.index + k);
+        const L clamped = clamp(rounded, L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index)));
+        s = hn::IfThenElse(below_normal, clamped.v, s.v);
+        moved_back = hn::Or(moved_back, below_normal);
+      }
+    }
+    moved_back = hn::AndNot(hn::IsNaN(s.v), moved_back);  // (far lanes: a NaN s is one scaled_lanes did not carry)
     const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
     if (lanes_here == width) {
       hn::ScatterIndex(s.v, d, s_out, hn::Load(hn::RebindToSigned<D>(), lanes_in.index + k));
@@ -372,6 +668,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   L phi_factor = phi, dy_factor = dy;  // phi dy as their product (detail::factors_of)
   auto offset = hn::Zero(du);
   lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
+  lane_mask<D> far_impact{hn::FirstN(d, 0)}, far_contact{hn::FirstN(d, 0)}, far_release{hn::FirstN(d, 0)};
   if (!hn::AllTrue(d, inside)) [[unlikely]] {
     // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
     const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
@@ -379,17 +676,25 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
                                     hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
                             hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)));
     // phi's band: the shift (in binades) that moves the larger of |u|, |dy| to
-    // the band's top, taken where u and dy are normal, phi in a band, and the
-    // smaller then at or above the band's least binade for its case
+    // the band's top, taken where u and dy are finite and non-zero, phi in a
+    // band, and the smaller then at or above the band's least binade for its case
     const auto least_normal = hn::Set(du, layout::least_normal);
-    const auto normal_span = hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal));
-    auto is_normal = [&](hn::Vec<decltype(du)> magnitude_bits) {
-      return unsigned_less(du, hn::Sub(magnitude_bits, least_normal), normal_span);
+    const auto one_bit = hn::Set(du, U(1));
+    auto is_finite_nonzero = [&](hn::Vec<decltype(du)> magnitude_bits) {
+      return unsigned_less(du, hn::Sub(magnitude_bits, one_bit), hn::Set(du, U((layout::exponent_field << significand_bits) - 1)));
     };
     auto field_of = [&](hn::Vec<decltype(du)> magnitude_bits) {
       return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
     };
-    const auto u_field = field_of(abs_u), dy_field = field_of(abs_dy);
+    // subnormal u and dy read as normal values (read_normal), on the vectors that hold one
+    normal_reading<D> u_read{hn::BitCast(d, abs_u), field_of(abs_u)}, dy_read{hn::BitCast(d, abs_dy), field_of(abs_dy)};
+    const bool subnormal_uv = !hn::AllTrue(du, unsigned_less(du, hn::Sub(hn::Min(abs_u, abs_dy), least_normal),
+                                                              hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal))));
+    if (subnormal_uv) [[unlikely]] {
+      u_read = read_normal(d, abs_u);
+      dy_read = read_normal(d, abs_dy);
+    }
+    const auto u_field = u_read.field, dy_field = dy_read.field;
     const auto larger = hn::Max(u_field, dy_field), smaller = hn::Min(u_field, dy_field);
     const auto band = hn::ShiftRight<fields::bands::band_bits>(
         hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
@@ -403,15 +708,48 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
     const auto phi_in_a_band =
         unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
-    const auto fits = hn::AndNot(hn::RebindMask(di, inside),
-                                 hn::And(hn::RebindMask(di, hn::And(hn::And(is_normal(abs_u), is_normal(abs_dy)), phi_in_a_band)),
-                                         hn::Not(hn::Lt(hn::Add(smaller, shift), least))));
+    const auto finite_uv = hn::AndNot(hn::RebindMask(di, inside), hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy))));
+    const auto normal_in_band = hn::And(finite_uv, hn::RebindMask(di, phi_in_a_band));
+    const auto too_far = hn::Lt(hn::Add(smaller, shift), least);
+    const auto fits = hn::AndNot(too_far, normal_in_band);
+    // u and dy too far apart for the band, or a finite phi beyond the last
+    // band (outside safe_window: safe_window<T>::holds bounds phi far below
+    // it): solve_stable's exact stage, on scaled_lanes, for the impacts, and
+    // for the contacts and releases whose case the dominant binade decides
+    // (detail::sign_of_dominant_binade, on the exponent fields); the others
+    // stay with solve_stable
+    static_assert(detail::plain_window<T> < fields::bands::last_phi_binade);
+    const auto beyond_bands = hn::RebindMask(di, hn::And(hn::Ge(phi, hn::Set(d, fields::bands::end)), hn::IsFinite(phi)));
+    const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands)));
+    if (!hn::AllFalse(di, far)) [[unlikely]] {
+      const auto phi_field = read_normal(d, hn::And(phi_bits, magnitude)).field;
+      const auto product_field = hn::Sub(hn::Add(phi_field, dy_field), hn::Set(di, layout::bias));  // phi dy in [2^field, 2^(field + 2))
+      const auto one = hn::Set(di, 1), two = hn::Set(di, 2);
+      const auto u_wins = hn::Gt(u_field, hn::Max(hn::Add(dy_field, one), hn::Add(product_field, two)));
+      const auto dy_wins = hn::Gt(dy_field, hn::Max(hn::Add(u_field, one), hn::Add(product_field, two)));
+      const auto product_wins = hn::Gt(product_field, hn::Add(larger, one));
+      const auto u_positive = hn::RebindMask(di, hn::Gt(u, hn::Zero(d)));
+      const auto contact_side = hn::RebindMask(di, hn::Gt(dy, hn::Zero(d)));
+      far_impact.m = hn::RebindMask(d, hn::AndNot(contact_side, far));
+      far_contact.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(dy_wins, hn::And(u_wins, u_positive))));
+      far_release.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(product_wins, hn::AndNot(u_positive, u_wins))));
+    }
     answerable.m = hn::Or(inside, hn::RebindMask(d, fits));
     offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, shift)));
     // the lanes that cannot be answered solve 1 = 1 = 1: no subnormal operand or result
     const auto one = hn::Set(d, T(1));
-    moved_u = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(u_bits, offset)), one);
-    moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
+    if (subnormal_uv) [[unlikely]] {  // the normal reading moved by the shift, less its own offset, and the sign
+      auto moved = [&](normal_reading<D> read, hn::Vec<decltype(du)> bits) {
+        const auto reading_offset = hn::Sub(field_of(hn::BitCast(du, read.value)), read.field);
+        const auto moved_offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, hn::Sub(shift, reading_offset))));
+        return hn::BitCast(d, hn::Or(hn::Add(hn::BitCast(du, read.value), moved_offset), hn::AndNot(magnitude, bits)));
+      };
+      moved_u = hn::IfThenElse(answerable.m, moved(u_read, u_bits), one);
+      moved_dy = hn::IfThenElse(answerable.m, moved(dy_read, dy_bits), one);
+    } else {
+      moved_u = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(u_bits, offset)), one);
+      moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
+    }
     moved_phi = hn::IfThenElse(answerable.m, phi, one);
     phi_factor = moved_phi;
     dy_factor = moved_dy;
@@ -449,24 +787,39 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
                                                    hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
                                                                   hn::Set(d, T(contact_case::release))),
                                                    hn::Set(d, T(contact_case::impact))));
-  if constexpr (sizeof(T) == 8) {
-    const hn::Rebind<std::int32_t, D> di32;
-    hn::StoreU(hn::DemoteTo(di32, which), di32, which_out + i);
-  } else {
-    hn::StoreU(hn::ConvertTo(di, which), di, which_out + i);
-  }
+  const hn::Rebind<std::int32_t, D> di32;
+  auto which_lanes = [&](hn::Vec<D> cases) {
+    if constexpr (sizeof(T) == 8) return hn::DemoteTo(di32, cases);
+    else return hn::ConvertTo(di32, cases);
+  };
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
   const auto is_root = answerable & !free_flight & !is_contact;
   if (hn::AllTrue(d, inside)) [[likely]] {
+    hn::StoreU(which_lanes(which), di32, which_out + i);
     pack(d, sorted.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
     pack(d, sorted.roots, is_root.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
     return;
   }
-  pack(d, sorted.contacts, (is_contact & !subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  pack(d, sorted.roots, (is_root & !subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  pack(d, sorted.contacts_of_subnormal_phi, (is_contact & subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  pack(d, sorted.roots_of_subnormal_phi, (is_root & subnormal_phi).m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-  pack(d, sorted.scalar, (!(answerable | free_flight)).m, u, dy, phi, offset, index);
+  const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
+                                        hn::IfThenElse(far_contact.m, hn::Set(d, T(contact_case::contact)),
+                                                       hn::Set(d, T(contact_case::release))));
+  const auto far = far_impact | far_contact | far_release;
+  hn::StoreU(which_lanes(hn::IfThenElse(far.m, far_which, which)), di32, which_out + i);
+  if (!hn::AllFalse(d, far.m)) [[unlikely]] {
+    const auto none = hn::Zero(du);
+    if (!hn::AllFalse(d, far_impact.m)) pack(d, sorted.far_impacts, far_impact.m, u, dy, phi, none, index);
+    if (!hn::AllFalse(d, far_contact.m)) pack(d, sorted.far_contacts, far_contact.m, u, dy, phi, none, index);
+    if (!hn::AllFalse(d, far_release.m)) pack(d, sorted.far_releases, far_release.m, u, dy, phi, none, index);
+  }
+  // (outside the window most packs take no lane of a vector: a test costs less than a pack)
+  auto pack_some = [&](packed_lanes<T>& into, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi) {
+    if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, lanes_of.m, u, dy, phi, offset, index);
+  };
+  pack_some(sorted.contacts, is_contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.roots, is_root & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.contacts_of_subnormal_phi, is_contact & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.roots_of_subnormal_phi, is_root & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.scalar, !(answerable | free_flight | far), u, dy, phi);
   sorted.roots.moved = sorted.contacts.moved = sorted.roots_of_subnormal_phi.moved = sorted.contacts_of_subnormal_phi.moved = true;
 }
 
@@ -481,14 +834,27 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
     for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, sorted);
-    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); });
-    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); });
+    using L = lanes<D>;
+    auto root_clamp = [](L s, L u, L dy) { return select(dy <= L(0), detail::impact_clamped(s, u, dy), detail::clamped_above_positive(s, dy)); };
+    auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
+    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); }, root_clamp);
+    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
+                         contact_clamp);
     if (sorted.roots_of_subnormal_phi.count != 0)
       left += solve_packed(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_roots<D, true>(x...); });
+                           [](auto... x) { return answer_roots<D, true>(x...); }, root_clamp);
     if (sorted.contacts_of_subnormal_phi.count != 0)
       left += solve_packed(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_contacts<D, true>(x...); });
+                           [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
+    if (sorted.far_impacts.count != 0)
+      left += solve_packed(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
+                           root_clamp);
+    if (sorted.far_contacts.count != 0)
+      left += solve_packed(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
+                           contact_clamp);
+    if (sorted.far_releases.count != 0)
+      left += solve_packed(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
+                           root_clamp);
     packed_lanes<T>& scalar = sorted.scalar;
     for (std::ptrdiff_t k = 0; k < scalar.count; ++k) {
       const auto lane = static_cast<std::ptrdiff_t>(scalar.index[k]);
