@@ -221,12 +221,12 @@ class checker {
     }
     if (isinf(s)) {
       // infinity is the root rounded only from the threshold, the largest value
-      // plus half its ulp, on (a tie there goes to the even neighbour, infinity);
-      // release with dy the largest value has only infinity on its side
+      // plus half its ulp, on (a tie there goes to the even neighbour, infinity),
+      // release with dy the largest value too
       const double half_ulp = std::ldexp(1.0, std::numeric_limits<T>::max_exponent - precision - 1);
       const auto threshold = exact::exactly<Integer>(double((std::numeric_limits<T>::max)()) + half_ulp);
       const bool rounds_to_infinity = s > 0 ? x.residual_sign(threshold) <= 0 : x.residual_sign(-threshold) >= 0;
-      if (!rounds_to_infinity && !(s > 0 && only_infinity_on_its_side(result.which, dy)))
+      if (!rounds_to_infinity)
         return "infinite, but the root rounds to a finite value";
     }
     if (promise_ == accuracy::correctly_rounded) {

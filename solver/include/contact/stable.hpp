@@ -387,11 +387,12 @@ inline solution<T> exact_cases(const T& u, const T& dy, const T& phi) {
   // at the threshold tells. A computed root from 2^(max_exponent + 1) up (a
   // scaled exponent beyond max_exponent + 1) needs no such test: release's
   // error bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
-  // With dy the largest T, release's side s > dy holds infinity alone.
+  // With dy the largest T the clamp's next_up(dy) is infinity, and the same
+  // test gives the largest T, dy itself, where the root rounds to it
+  // (lies_on_its_side admits it there).
   // (Inside the plain window the root is below 2^(2E + 1), far from the largest T.)
   using std::isinf;
-  if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 &&
-      !only_infinity_on_its_side(contact_case::release, dy) && !release_root_rounds_to_infinity(u, dy, phi))
+  if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 && !release_root_rounds_to_infinity(u, dy, phi))
     s = (std::numeric_limits<T>::max)();
   return {s, contact_case::release};
 }
