@@ -145,6 +145,22 @@ TYPED_TEST(TopOfRange, StableIsInfiniteExactlyWhereTheRootRoundsToInfinityAndEls
   EXPECT_GE(finite_roots, 14);  // the list is mostly of finite roots beside infinite operands' neighbours
 }
 
+// newton's case is the exact one at the top of the range, where its rounded
+// residual at the kink can have the other sign (u + dy rounds to dy), and its
+// s lies on that case's side.
+TYPED_TEST(TopOfRange, NewtonPicksTheExactCase) {
+  using T = TypeParam;
+  auto inputs = harness::top_of_range<T>();
+  inputs.push_back({T(-1), T(0x1.fffffep+127), T(1)});  // the largest float as a dy of this type
+  inputs.push_back({T(-1), T(0x1p+100), T(1)});
+  for (const auto& x : inputs) {
+    const auto exact = reference::solve(x.u, x.dy, x.phi);
+    const auto got = solve_newton(x.u, x.dy, x.phi);
+    EXPECT_EQ(got.which, exact.which) << x;
+    EXPECT_TRUE(lies_on_its_side(got.which, got.s, x.dy)) << x << " s=" << got.s;
+  }
+}
+
 // Release with dy the largest T: the largest T, dy itself, is admitted on
 // release's side, and only there.
 TEST(Cases, ReleaseAdmitsDyOnItsSideOnlyWhereDyIsTheLargest) {

@@ -260,6 +260,17 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   }
 }
 
+// The exact case of a valid input, by the criteria (A.29)/(A.30) (dy <= 0:
+// u <= -dy, an exact comparison) and (A.31)/(A.32) (dy > 0: the exact sign of
+// u + dy - phi dy), as the stable path decides them; for the other algorithms,
+// whose own arithmetic can round across a boundary.
+template <class T>
+contact_case exact_case(const T& u, const T& dy, const T& phi) {
+  if (dy <= 0) return u <= -dy ? contact_case::free : contact_case::impact;
+  const bool contact = safe_window<T>::holds(u, dy, phi) ? stays_in_contact<true>(u, dy, phi) : stays_in_contact<false>(u, dy, phi);
+  return contact ? contact_case::contact : contact_case::release;
+}
+
 // Whether the (A.32) root rounds to +infinity: whether it lies at or beyond
 // the threshold t = max + h, h half the ulp of the largest finite T (at t
 // itself the tie goes to the even neighbour, 2^max_exponent). R increases, so
