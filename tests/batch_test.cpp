@@ -426,6 +426,22 @@ TEST(Batch, MillionsOfFloatLanesOfEveryKindEqualScalarStable) {
   for (std::uint64_t seed = 50; seed < 54; ++seed) expect_same_as_scalar(lanes_of_every_kind<float>(1000000, seed));
 }
 
+// The inputs at the top of the range (harness::top_of_range), in every lane
+// position, among ordinary lanes: the finite results beside the largest T
+// that solve_stable gives.
+template <class T>
+lanes<T> top_of_range_lanes() {
+  auto in = inputs<T>(64, 5);
+  for (int k = 0; k < 17; ++k)  // every offset within the widest vector
+    for (const auto& x : harness::top_of_range<T>()) in.add(x.u, x.dy, x.phi);
+  return in;
+}
+
+TEST(Batch, TopOfRangeLanesEqualScalarStable) {
+  expect_same_as_scalar(top_of_range_lanes<double>());
+  expect_same_as_scalar(top_of_range_lanes<float>());
+}
+
 TEST(Batch, LongDoubleLanesEqualScalarStable) {
   const auto in = inputs<long double>(2000, 4);
   std::vector<long double> s(in.u.size());

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "harness.hpp"
+#include "read_number.hpp"
 
 namespace contact::testing {
 namespace {
@@ -86,6 +87,129 @@ TEST(ContactSolve, ReadsADecimalBelowTheSubnormalRangeAsZero) {
   const auto out = lines_of(run_cli("", "1e-400 1 3\n0 1 3\n").out);
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out[0], out[1]);
+}
+
+// ---- reading numbers: one rounding to nearest, ties to even -----------------
+
+// x exactly in decimal ("0.DIGITSeE"), from MPFR: a dyadic number has a finite
+// decimal expansion, and mpfr_get_str with enough digits writes all of it.
+std::string exact_decimal(const reference::real& x) {
+  if (mpfr_zero_p(x.get())) return "0";
+  // x = m 2^(e - prec), m an integer of prec bits: at most prec + |e| digits
+  const long digits = long(mpfr_get_prec(x.get())) + std::labs(long(mpfr_get_exp(x.get()))) + 2;
+  mpfr_exp_t exponent = 0;
+  char* text = mpfr_get_str(nullptr, &exponent, 10, std::size_t(digits), x.get(), MPFR_RNDN);
+  std::string digits_text(text);
+  mpfr_free_str(text);
+  const bool negative = digits_text[0] == '-';
+  if (negative) digits_text.erase(0, 1);
+  return (negative ? "-0." : "0.") + digits_text + "e" + std::to_string(exponent);
+}
+
+template <class T>
+bool same_bits(const T& a, const T& b) {
+  using std::signbit;
+  return a == b && signbit(a) == signbit(b);
+}
+
+// For neighbours low < high of T (high infinite past the largest T): the exact
+// midpoint, and the midpoint moved by 2^-40 of their spacing either way, as
+// exact decimals of either sign, must read as the even one of the two, high,
+// and low; an infinite answer must be reported as an overflow. Returns how
+// many it read.
+template <class T>
+int expect_midpoints_read_to_nearest_even(const T& low, bool low_is_even) {
+  using contact::cli::read_rounded;
+  using contact::cli::reading;
+  constexpr T infinity = std::numeric_limits<T>::infinity();
+  const mpfr_prec_t bits = detail::precision_of<T>() + 64;  // low, its neighbours and the points between, exactly
+  const T high = detail::next_up(low);
+  // the spacing of T at low (beyond the largest T, the largest T's own)
+  reference::real spacing = high < infinity ? reference::exactly(high, bits) : reference::exactly(low, bits);
+  mpfr_sub(spacing.get(), spacing.get(), (high < infinity ? reference::exactly(low, bits) : reference::exactly(detail::next_down(low), bits)).get(), MPFR_RNDN);
+  int read = 0;
+  for (int direction : {0, 1, -1}) {
+    reference::real x = reference::exactly(low, bits), step(bits);
+    mpfr_div_2ui(step.get(), spacing.get(), 1, MPFR_RNDN);
+    mpfr_add(x.get(), x.get(), step.get(), MPFR_RNDN);  // the midpoint
+    mpfr_div_2ui(step.get(), spacing.get(), 40, MPFR_RNDN);
+    if (direction > 0) mpfr_add(x.get(), x.get(), step.get(), MPFR_RNDN);
+    if (direction < 0) mpfr_sub(x.get(), x.get(), step.get(), MPFR_RNDN);
+    const T expected = direction == 0 ? (low_is_even ? low : high) : direction > 0 ? high : low;
+    for (bool negative : {false, true}) {
+      const std::string text = (negative ? "-" : "") + exact_decimal(x);
+      const auto got = read_rounded<T>(text);
+      ++read;
+      if (!(expected < infinity)) {
+        EXPECT_EQ(got.status, reading::overflows) << text.substr(0, 60);
+      } else {
+        EXPECT_EQ(got.status, reading::number) << text.substr(0, 60);
+        EXPECT_TRUE(same_bits(got.value, negative ? T(-expected) : expected))
+            << "direction " << direction << ": " << text.substr(0, 80) << "...";
+      }
+    }
+  }
+  return read;
+}
+
+// Whether low is an even value of T (its last significand bit 0): low over
+// the spacing of T at low is an even integer.
+template <class T>
+bool is_even(const T& low) {
+  const mpfr_prec_t bits = detail::precision_of<T>() + 8;
+  const T high = detail::next_up(low), neighbour = high < std::numeric_limits<T>::infinity() ? high : detail::next_down(low);
+  reference::real quotient = reference::exactly(low, bits), spacing = reference::exactly(neighbour, bits);
+  mpfr_sub(spacing.get(), spacing.get(), quotient.get(), MPFR_RNDN);
+  mpfr_abs(spacing.get(), spacing.get(), MPFR_RNDN);
+  mpfr_div(quotient.get(), quotient.get(), spacing.get(), MPFR_RNDN);
+  mpfr_div_2ui(quotient.get(), quotient.get(), 1, MPFR_RNDN);
+  return mpfr_integer_p(quotient.get()) != 0;
+}
+
+template <class T>
+class ReadsNumbers : public ::testing::Test {};
+using types_read_by_mpfr = ::testing::Types<float, double, long double, float128>;
+TYPED_TEST_SUITE(ReadsNumbers, types_read_by_mpfr, type_names_for_gtest);
+
+// Halfway cases and their neighbours, as exact decimals: in the normal range,
+// in the subnormals (the least of them, and one of many bits at the top of
+// them), below the least subnormal, and at the largest T and the threshold of
+// overflow beyond it.
+TYPED_TEST(ReadsNumbers, HardDecimalsRoundOnceToNearestEven) {
+  using T = TypeParam;
+  using std::ldexp;
+  const T one = 1, tiny = std::numeric_limits<T>::denorm_min(), largest = (std::numeric_limits<T>::max)();
+  const T least_normal = (std::numeric_limits<T>::min)();
+  const T many_bits = T(least_normal - T(10 * tiny));  // a subnormal of many bits, just below the normals
+  const T lows[] = {one,  detail::next_up(one),   T(0),          tiny,    T(2 * tiny), many_bits, detail::next_up(many_bits),
+                    T(least_normal / 2), detail::next_down(largest), largest, ldexp(one, 100)};
+  int read = 0;
+  for (const T& low : lows) read += expect_midpoints_read_to_nearest_even(low, is_even(low));
+  EXPECT_EQ(read, 6 * int(std::size(lows)));
+}
+
+// Random neighbours over T's whole range (harness::any_finite), each midpoint
+// and its two neighbours.
+TYPED_TEST(ReadsNumbers, RandomMidpointsRoundOnceToNearestEven) {
+  using T = TypeParam;
+  using std::fabs;
+  harness::seeded_source source(31);
+  int read = 0;
+  for (int k = 0; k < 150; ++k) {
+    const T low = fabs(harness::any_finite<T>(source));
+    if (detail::next_up(low) < std::numeric_limits<T>::infinity()) read += expect_midpoints_read_to_nearest_even(low, is_even(low));
+  }
+  EXPECT_GT(read, 800);
+}
+
+// glibc's strtof reads this decimal, the exact value of -0x1.6ce193p-127
+// (midway between no two floats), as -0x1.6ce19p-127; the nearest float is
+// -0x1.6ce194p-127.
+TEST(ContactSolve, ReadsASubnormalFloatDecimalToTheNearestFloat) {
+  EXPECT_EQ(contact::cli::read_rounded<float>(exact_decimal(reference::exactly(-0x1.6ce193p-127, 64))).value, -0x1.6ce194p-127f);
+  const auto out = lines_of(run_cli("--type float", exact_decimal(reference::exactly(-0x1.6ce193p-127, 64)) + " 0 0\n").out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0], "0x1.6ce194p-127 1");
 }
 
 TEST(ContactSolve, RejectsMalformedNumbersInWiderTypes) {

@@ -117,25 +117,59 @@ TEST(Algorithms, SolveOfANumberThatNamesNoAlgorithmIsStable) {
   }
 }
 
-// Release with dy the largest double: only +infinity lies on release's side
-// of dy, and stable answers it even where the root itself rounds to the
-// largest double (a known cost of keeping each case on its side; the
-// checkers accept it through only_infinity_on_its_side). Found by the
-// check tool's fuzzer on the stable candidate.
-TEST(Cases, ReleaseWithTheLargestDyAnswersInfinity) {
+// At the top of the range (harness::top_of_range): the exact case, and a
+// finite result within its branch's bound wherever the exact root rounds to a
+// finite value (release with dy the largest T included, where that value is dy
+// itself: lies_on_its_side admits it), infinity only where it rounds to infinity.
+template <class T>
+class TopOfRange : public ::testing::Test {};
+using types_with_a_reachable_largest = ::testing::Types<float, double, long double, float128>;
+TYPED_TEST_SUITE(TopOfRange, types_with_a_reachable_largest, type_names_for_gtest);
+
+TYPED_TEST(TopOfRange, StableIsInfiniteExactlyWhereTheRootRoundsToInfinityAndElseWithinBound) {
+  using T = TypeParam;
+  int finite_roots = 0;
+  for (const auto& x : harness::top_of_range<T>()) {
+    const auto exact = reference::solve(x.u, x.dy, x.phi);
+    ASSERT_TRUE(exact.is_certified) << x;
+    const bool rounds_finite = mpfr_number_p(reference::rounded_root<T>(exact, x.u, x.dy, x.phi).get());
+    finite_roots += rounds_finite;
+    const auto got = solve_stable(x.u, x.dy, x.phi);
+    EXPECT_EQ(got.which, exact.which) << x;
+    EXPECT_TRUE(lies_on_its_side(got.which, got.s, x.dy)) << x;
+    if (rounds_finite)
+      EXPECT_LE(reference::ulp_error(got.s, exact), stable_bound_for(exact.which, x.u)) << x << " s=" << got.s;
+    else
+      EXPECT_EQ(got.s, std::numeric_limits<T>::infinity()) << x;
+  }
+  EXPECT_GE(finite_roots, 14);  // the list is mostly of finite roots beside infinite operands' neighbours
+}
+
+// newton's case is the exact one at the top of the range, where its rounded
+// residual at the kink can have the other sign (u + dy rounds to dy), and its
+// s lies on that case's side.
+TYPED_TEST(TopOfRange, NewtonPicksTheExactCase) {
+  using T = TypeParam;
+  auto inputs = harness::top_of_range<T>();
+  inputs.push_back({T(-1), T(0x1.fffffep+127), T(1)});  // the largest float as a dy of this type
+  inputs.push_back({T(-1), T(0x1p+100), T(1)});
+  for (const auto& x : inputs) {
+    const auto exact = reference::solve(x.u, x.dy, x.phi);
+    const auto got = solve_newton(x.u, x.dy, x.phi);
+    EXPECT_EQ(got.which, exact.which) << x;
+    EXPECT_TRUE(lies_on_its_side(got.which, got.s, x.dy)) << x << " s=" << got.s;
+  }
+}
+
+// Release with dy the largest T: the largest T, dy itself, is admitted on
+// release's side, and only there.
+TEST(Cases, ReleaseAdmitsDyOnItsSideOnlyWhereDyIsTheLargest) {
   const double largest = std::numeric_limits<double>::max();
-  const double u = -largest, dy = largest, phi = 0x1p-1073;
-  const auto got = solve_stable(u, dy, phi);
-  EXPECT_EQ(got.which, contact_case::release);
-  EXPECT_EQ(got.s, inf);
-  EXPECT_TRUE(only_infinity_on_its_side(got.which, dy));
-  EXPECT_FALSE(only_infinity_on_its_side(got.which, std::nextafter(dy, 0.0)));
-  EXPECT_FALSE(only_infinity_on_its_side(contact_case::contact, dy));
-  // the root rounds to the largest double: the infinity costs accuracy, by the reference
-  const auto exact = reference::solve(u, dy, phi);
-  EXPECT_EQ(exact.which, contact_case::release);
-  EXPECT_EQ(reference::ulp_error<double>(largest, exact), 0.0);
-  EXPECT_EQ(reference::ulp_error<double>(got.s, exact), inf);
+  EXPECT_TRUE(lies_on_its_side(contact_case::release, largest, largest));
+  EXPECT_TRUE(lies_on_its_side(contact_case::release, inf, largest));
+  EXPECT_FALSE(lies_on_its_side(contact_case::release, 1.0, 1.0));
+  EXPECT_FALSE(lies_on_its_side(contact_case::release, std::nextafter(largest, 0.0), std::nextafter(largest, 0.0)));
+  EXPECT_FALSE(lies_on_its_side(contact_case::impact, -largest, -largest));
 }
 
 // A release root between the largest double and the threshold of rounding to
@@ -197,7 +231,7 @@ TEST(StableHardCases, ListedInputsStayWithinBound) {
     const auto r = solve_stable(x[0], x[1], x[2]);
     EXPECT_EQ(r.which, exact.which);
     EXPECT_TRUE(lies_on_its_side(r.which, r.s, x[1]));
-    if (root_is_finite_in<double>(exact))
+    if (std::isfinite(reference::rounded_to_double(exact.s)))
       EXPECT_LE(reference::ulp_error(r.s, exact), stable_bound(r.which, x[0] > 0)) << x[0] << " " << x[1] << " " << x[2];
     else
       EXPECT_TRUE(std::isinf(r.s));

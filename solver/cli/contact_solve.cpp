@@ -9,7 +9,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -21,6 +20,7 @@
 
 #include "contact/solve.hpp"
 #include "contact/types.hpp"
+#include "read_number.hpp"
 
 namespace {
 
@@ -66,18 +66,14 @@ std::optional<T> parse_hex(const std::string& token) {
 
 template <class T>
 std::optional<T> parse_number(const std::string& token, std::string& reason) {
-  if (auto hex = parse_hex<T>(token)) return hex;
-  if constexpr (std::is_floating_point_v<T>) {
-    errno = 0;
-    char* end = nullptr;
-    T value;
-    if constexpr (std::is_same_v<T, float>) value = std::strtof(token.c_str(), &end);
-    else if constexpr (std::is_same_v<T, double>) value = std::strtod(token.c_str(), &end);
-    else value = std::strtold(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') { reason = "'" + token + "' is not a number"; return std::nullopt; }
-    if (errno == ERANGE && std::isinf(value)) { reason = "'" + token + "' overflows " + std::string(contact::type_name<T>); return std::nullopt; }
+  if constexpr (std::is_floating_point_v<T> || std::is_same_v<T, contact::float128>) {
+    // decimal and hex alike, rounded once (read_number.hpp)
+    const auto [value, status] = contact::cli::read_rounded<T>(token);
+    if (status == contact::cli::reading::not_a_number) { reason = "'" + token + "' is not a number"; return std::nullopt; }
+    if (status == contact::cli::reading::overflows) { reason = "'" + token + "' overflows " + std::string(contact::type_name<T>); return std::nullopt; }
     return value;
   } else {
+    if (auto hex = parse_hex<T>(token)) return hex;
     const bool looks_numeric = !token.empty() && token.find_first_not_of("0123456789+-.eE") == std::string::npos;
     if (!looks_numeric) { reason = "'" + token + "' is not a number"; return std::nullopt; }
     try { return T(token); } catch (const std::exception&) { reason = "'" + token + "' is not a number"; return std::nullopt; }

@@ -7,8 +7,8 @@
 //     section 2): of u + dy for dy <= 0, of u + dy - phi dy for dy > 0;
 //   - s lies on its case's side of dy (for solve_rounded weakly: s may be dy);
 //   - s is never NaN, and infinite only where s* rounds to that infinity (it
-//     lies at or beyond the largest finite value plus half its ulp), or for
-//     release with dy the largest finite value;
+//     lies at or beyond the largest finite value plus half its ulp), release
+//     with dy the largest finite value included;
 //   - s is as accurate as the method promises: for solve_stable within its
 //     branch's bound of proofs/claimed_bounds.txt carried over to the format's
 //     precision (below); for solve_rounded, s* rounded to nearest, ties to
@@ -20,16 +20,23 @@
 // (exact_root.hpp). Each box must also reach all four cases on both the plain
 // path and the scaled one where it says it does, or the box is a failure.
 //
-// Prints one line, "exhaustive: N triples checked, F failures", the counts
-// per method, then the first failures if any, and exits non-zero when F > 0.
+// Prints each failure as it finds it ("found: ..."), then one line,
+// "exhaustive: N triples checked, F failures", the counts per method, and the
+// first failures again, and exits non-zero when F > 0. A crash in the checked
+// code prints the triple each thread was solving and exits with status 2.
 // With --worst it then prints, per method, format and branch, the largest
 // error found in ulps and the share of answers that are correctly rounded (a
 // report; nothing is asserted on it).
 #include <algorithm>
+#include <atomic>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <unistd.h>
 #include <initializer_list>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -221,12 +228,12 @@ class checker {
     }
     if (isinf(s)) {
       // infinity is the root rounded only from the threshold, the largest value
-      // plus half its ulp, on (a tie there goes to the even neighbour, infinity);
-      // release with dy the largest value has only infinity on its side
+      // plus half its ulp, on (a tie there goes to the even neighbour, infinity),
+      // release with dy the largest value too
       const double half_ulp = std::ldexp(1.0, std::numeric_limits<T>::max_exponent - precision - 1);
       const auto threshold = exact::exactly<Integer>(double((std::numeric_limits<T>::max)()) + half_ulp);
       const bool rounds_to_infinity = s > 0 ? x.residual_sign(threshold) <= 0 : x.residual_sign(-threshold) >= 0;
-      if (!rounds_to_infinity && !(s > 0 && only_infinity_on_its_side(result.which, dy)))
+      if (!rounds_to_infinity)
         return "infinite, but the root rounds to a finite value";
     }
     if (promise_ == accuracy::correctly_rounded) {
@@ -279,7 +286,19 @@ struct tally {
     }
   }
 
+  // Each failure is printed as it is found (a run that dies later has said
+  // what it found), the first `printed` of the run; the first ones of each
+  // box are kept for the summary too.
+  static constexpr long printed = 200;
   void fail(long position, std::string what) {
+    static std::atomic<long> found{0};
+    if (const long n = found++; n <= printed) {
+      static std::mutex printing;
+      const std::lock_guard<std::mutex> lock(printing);
+      if (n < printed) std::printf("  found: %s\n", what.c_str());
+      else std::printf("  found: more failures, counted and not printed\n");
+      std::fflush(stdout);
+    }
     if (failed++ < long(kept)) first_failures.emplace_back(position, std::move(what));
   }
 };
@@ -314,6 +333,25 @@ void print_report(const char* format_name, const tally& t) {
                   t.worst[b], 100.0 * double(t.rounded[b]) / double(t.counted[b]), t.counted[b]);
 }
 
+// The triple each thread is solving, for the report of a crash in the checked
+// code (a NaN that it did not expect can send it anywhere): printed by the
+// handler of SIGSEGV, SIGFPE, SIGABRT and SIGBUS with the failures found so far.
+struct under_test {
+  std::atomic<double> u{0}, dy{0}, phi{0};
+  std::atomic<const char*> what{""};
+};
+under_test current[2];
+
+extern "C" void report_crash(int signal) {
+  char text[300];
+  for (const auto& c : current) {
+    const int n = std::snprintf(text, sizeof text, "  crashed (signal %d) in %s at u=%.9g dy=%.9g phi=%.9g\n", signal,
+                                c.what.load(), c.u.load(), c.dy.load(), c.phi.load());
+    if (n > 0) (void)!write(2, text, std::size_t(std::min(n, int(sizeof text) - 1)));
+  }
+  std::_Exit(2);
+}
+
 // Every triple of the box, on two threads (the u values alternate).
 template <class T>
 tally check_box(const method<T>& m, const box& b, const char* format_name, bool report) {
@@ -329,6 +367,7 @@ tally check_box(const method<T>& m, const box& b, const char* format_name, bool 
         for (std::size_t j = 0; j < dys.size(); ++j)
           for (std::size_t k = 0; k < phis.size(); ++k) {
             const T &u = us[i], &dy = dys[j], &phi = phis[k];
+            current[t].u = double(u), current[t].dy = double(dy), current[t].phi = double(phi), current[t].what = m.name;
             const solution<T> result = m.solve(u, dy, phi);
             ++mine.checked;
             if (result.which != contact_case::invalid)
@@ -397,6 +436,7 @@ void check_format(method_id id, const char* format_name, std::initializer_list<b
 int main(int argc, char** argv) {
   using namespace contact::testing;
   const bool report = argc > 1 && std::strcmp(argv[1], "--worst") == 0;
+  for (int signal : {SIGSEGV, SIGFPE, SIGABRT, SIGBUS}) std::signal(signal, report_crash);
   tally totals[method_count];
   check_format<format<true>>(stable_method, "fused", {central, top, bottom, stiff, soft}, totals, report);
   check_format<format<false>>(stable_method, "unfused", {central, top, bottom, stiff, soft}, totals, report);

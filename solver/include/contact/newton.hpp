@@ -8,6 +8,7 @@
 #include "cases.hpp"
 #include "detail/float_tools.hpp"
 #include "detail/input.hpp"
+#include "stable.hpp"
 
 namespace contact {
 namespace newton_form {
@@ -72,9 +73,12 @@ newton_result<T> newton_iterate(const T& u, const T& dy, const T& phi, int max_i
   using std::fabs;
   if (auto invalid = detail::reject_invalid(u, dy, phi)) return {*invalid, 0};
   auto [r, slope] = newton_form::residual_of(dy, u, dy, phi);
-  const bool root_below_kink = dy > 0 ? r >= 0 : r > 0;
-  const contact_case which = dy > 0 ? (root_below_kink ? contact_case::contact : contact_case::release)
-                                    : (root_below_kink ? contact_case::impact : contact_case::free);
+  // The case, and so the side of the kink the root lies on, from the exact
+  // criteria: the rounded R(dy) can have the other sign within its rounding
+  // error (u + dy rounds to dy beside a large dy). Where it does, the first
+  // residual closes the bracket onto the kink and the iteration stops there.
+  const contact_case which = detail::exact_case(u, dy, phi);
+  const bool root_below_kink = which == contact_case::contact || which == contact_case::impact;
   // R is C1 at the kink except at dy = 0, where (A.8)'s side has slope 1 + phi
   // (it is the line (1 + phi) s + u there) and (A.5)'s side slope 1
   if (dy == 0 && which == contact_case::impact) slope = 1 + phi;
@@ -103,12 +107,13 @@ newton_result<T> newton_iterate(const T& u, const T& dy, const T& phi, int max_i
   // A root above T's range: the residual has not changed sign at the largest
   // finite value. None lies below it: below the kink the root is at least -u
   // (R(-u) <= 0), and the bracket's lower end, -largest, is never above -u.
-  if (upper == largest && newton_form::residual_of(largest, u, dy, phi).residual < 0)
+  if (!root_below_kink && upper == largest && newton_form::residual_of(largest, u, dy, phi).residual < 0)
     s = std::numeric_limits<T>::infinity();
   // Every iterate stays in the bracket, which holds the kink on the root's
-  // side: only the strict sides of (A.30) and (A.32) can need a step off dy.
+  // side: only the strict sides of (A.30) and (A.32) can need a step off dy
+  // (none above the largest finite dy, whose root is then finite: see above).
   if (which == contact_case::impact && !(s < dy)) s = detail::next_down(dy);
-  if (which == contact_case::release && !(s > dy)) s = detail::next_up(dy);
+  if (which == contact_case::release && !(s > dy) && dy < largest) s = detail::next_up(dy);
   return {{s, which}, iterations};
 }
 

@@ -291,10 +291,11 @@ double ulp_error(const T& computed, const certified& exact) {
   return mpfr_get_d(difference.get(), MPFR_RNDU);
 }
 
-// ulp_error, counting as 0 ulps the one answer the library gives on purpose
-// beyond rounding: release with dy the largest finite T answers +infinity,
-// the only value on its side of dy (only_infinity_on_its_side), whatever the
-// root rounds to. Checkers that grade answers use this, so that they agree.
+// ulp_error, counting as 0 ulps +infinity for release with dy the largest
+// finite T (only_infinity_on_its_side), the answer of an implementation that
+// keeps release strictly above dy whatever the root rounds to. contact-check
+// grades other implementations by it; the library's own answers are graded
+// by ulp_error.
 template <class T>
 double accepted_ulp_error(const T& computed, const certified& exact, const T& dy) {
   if (only_infinity_on_its_side(exact.which, dy) && computed == std::numeric_limits<T>::infinity()) return 0.0;

@@ -260,6 +260,17 @@ bool stays_in_contact(const T& u, const T& dy, const T& phi) {
   }
 }
 
+// The exact case of a valid input, by the criteria (A.29)/(A.30) (dy <= 0:
+// u <= -dy, an exact comparison) and (A.31)/(A.32) (dy > 0: the exact sign of
+// u + dy - phi dy), as the stable path decides them; for the other algorithms,
+// whose own arithmetic can round across a boundary.
+template <class T>
+contact_case exact_case(const T& u, const T& dy, const T& phi) {
+  if (dy <= 0) return u <= -dy ? contact_case::free : contact_case::impact;
+  const bool contact = safe_window<T>::holds(u, dy, phi) ? stays_in_contact<true>(u, dy, phi) : stays_in_contact<false>(u, dy, phi);
+  return contact ? contact_case::contact : contact_case::release;
+}
+
 // Whether the (A.32) root rounds to +infinity: whether it lies at or beyond
 // the threshold t = max + h, h half the ulp of the largest finite T (at t
 // itself the tie goes to the even neighbour, 2^max_exponent). R increases, so
@@ -387,11 +398,12 @@ inline solution<T> exact_cases(const T& u, const T& dy, const T& phi) {
   // at the threshold tells. A computed root from 2^(max_exponent + 1) up (a
   // scaled exponent beyond max_exponent + 1) needs no such test: release's
   // error bound, a few ulps, keeps the exact root beyond 2^max_exponent too.
-  // With dy the largest T, release's side s > dy holds infinity alone.
+  // With dy the largest T the clamp's next_up(dy) is infinity, and the same
+  // test gives the largest T, dy itself, where the root rounds to it
+  // (lies_on_its_side admits it there).
   // (Inside the plain window the root is below 2^(2E + 1), far from the largest T.)
   using std::isinf;
-  if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 &&
-      !only_infinity_on_its_side(contact_case::release, dy) && !release_root_rounds_to_infinity(u, dy, phi))
+  if (isinf(s) && root.exponent <= std::numeric_limits<T>::max_exponent + 1 && !release_root_rounds_to_infinity(u, dy, phi))
     s = (std::numeric_limits<T>::max)();
   return {s, contact_case::release};
 }

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 #include "contact/detail/float_tools.hpp"
 #include "contact/harness/random.hpp"
@@ -195,6 +196,24 @@ input<T> on_contact_release_boundary(const T& dy, const T& phi, long steps) {
   T boundary = dy * (phi - 1);
   if (!isfinite(boundary)) boundary = (std::numeric_limits<T>::max)();
   return {within_reference_range(detail::ulp_steps(boundary, steps)), dy, phi};
+}
+
+// Inputs at the top of T's range, listed: dy or u the largest finite T, with
+// u tiny or large and phi subnormal, 1, near 1 or huge beside it, in every
+// case; where the exact root lies just above the largest T it rounds to it,
+// or to infinity (phi = 1 + eps). For the types whose largest value the
+// reference can hold (float to float128).
+template <class T>
+std::vector<input<T>> top_of_range() {
+  const T largest = (std::numeric_limits<T>::max)(), tiny = std::numeric_limits<T>::denorm_min();
+  const T eps = std::numeric_limits<T>::epsilon(), one = 1;
+  return {
+      {-one, largest, one},       {-tiny, largest, one},     {one, largest, T(one + eps)}, {-one, largest, T(one + eps)},
+      {-largest, largest, tiny},  {-largest, largest, one},  {-tiny, largest, tiny},       {-largest, largest, T(0)},
+      {T(0), largest, one},       {-largest, one, one},      {-largest, tiny, largest},    {largest, largest, one},
+      {largest, T(0), tiny},      {largest, -tiny, one},     {largest, -largest, largest}, {-largest, T(0), one},
+      {largest / 2, largest, tiny}, {-largest, largest / 2, T(2)},
+  };
 }
 
 // The (A.29)/(A.30) boundary: dy <= 0 and u within `ulps` values of T of -dy.
