@@ -586,6 +586,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
   for (std::ptrdiff_t k = lanes_in.count; k < lanes_in.count + width; ++k) {  // the last vector's unused lanes: 1 = 1 = 1
     lanes_in.u[k] = lanes_in.dy[k] = lanes_in.phi[k] = T(1);
     lanes_in.offset[k] = 0;
+    lanes_in.index[k] = 0;  // a lane of the arrays, for the gathers below
   }
   std::ptrdiff_t left = 0;
   for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
