@@ -133,7 +133,9 @@ class checker {
 
   // For each failing property, where it breaks: the property's trials at
   // magnitudes of |u|, |dy| and phi a fixed step of decades apart over the
-  // domain, one variable at a time (the others as the domain draws them).
+  // domain, one variable at a time (the others as the domain draws them), and
+  // |u| and |dy| together: (A.2) is homogeneous in them, so their common
+  // scale is the size of the input.
   void run_sweep(long trials_per_point = 24) {
     const auto start = std::chrono::steady_clock::now();
     seeded_source source(options_.seed ^ 0x5bd1e995ULL);
@@ -141,7 +143,7 @@ class checker {
       record& r = record_of(p);
       if (!r.failed || p.name == "invalid_input" || p.name == "phi_zero") continue;
       const bool boundary = p.name.rfind("continuity", 0) == 0;  // u is the boundary's, not drawn
-      for (int variable = boundary ? 1 : 0; variable < 3; ++variable)
+      for (int variable = boundary ? 1 : 0; variable < (boundary ? 3 : 4); ++variable)
         r.where.push_back(sweep_variable(p, variable, trials_per_point, source));
     }
     sweep_seconds_ = seconds_since(start);
@@ -456,10 +458,14 @@ class checker {
     return text;
   }
 
-  // One line: where property p holds and fails as one variable (0 |u|, 1 |dy|, 2 phi) sweeps the domain.
+  // One line: where property p holds and fails as one variable (0 |u|, 1 |dy|,
+  // 2 phi, 3 |u| and |dy| at once, the larger of them set) sweeps the domain.
   std::string sweep_variable(const property<T>& p, int variable, long trials_per_point, seeded_source& source) {
-    static const char* names[] = {"|u|", "|dy|", "phi"};
-    const span& v = variable == 0 ? domain_.u() : variable == 1 ? domain_.dy() : domain_.phi();
+    static const char* names[] = {"|u|", "|dy|", "phi", "|u| and |dy| together (the larger)"};
+    span both = domain_.u();
+    both.least = std::max(domain_.u().least, domain_.dy().least);
+    both.most = std::max(domain_.u().most, domain_.dy().most);
+    const span& v = variable == 0 ? domain_.u() : variable == 1 ? domain_.dy() : variable == 2 ? domain_.phi() : both;
     const auto points = sweep_points(v);
     std::string head = p.name + " over " + names[variable] + ": ";
     if (points.empty()) return head + "one magnitude only in the domain, not swept";
@@ -468,9 +474,19 @@ class checker {
     for (double e : points)
       for (long i = 0; i < trials_per_point; ++i) {
         trial<T> t = p.draw(source);
-        T& f = variable == 0 ? t.x.u : variable == 1 ? t.x.dy : t.x.phi;
         const double jitter = step * 0.1 * (unit(source) - 0.5);
         const double magnitude = std::clamp(std::pow(10.0, e + jitter), v.least, v.most);
+        if (variable == 3) {
+          using std::fabs;
+          const double larger = std::max(fabs(double(t.x.u)), fabs(double(t.x.dy)));
+          if (larger > 0) {
+            t.x.u = T(double(t.x.u) / larger * magnitude);
+            t.x.dy = T(double(t.x.dy) / larger * magnitude);
+          }
+          trials.push_back(t);
+          continue;
+        }
+        T& f = variable == 0 ? t.x.u : variable == 1 ? t.x.dy : t.x.phi;
         const bool negative = variable < 2 && (f < 0 || (f == 0 && v.negative && (!v.positive || coin(source))));
         f = T(negative ? -magnitude : magnitude);
         trials.push_back(t);

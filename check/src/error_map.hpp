@@ -118,30 +118,37 @@ inline std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-// The gnuplot commands of one panel's boundary line and case labels.
-inline std::string cases_of(const int q[2], double phi) {
+// The gnuplot commands of one panel's boundary line, log10|dy| = log10|u| - offset,
+// and the names of the cases on its sides that the panel shows.
+inline std::string cases_of(const int q[2], double phi, double u_low, double u_high, double dy_low, double dy_high) {
   std::ostringstream gp;
-  auto label = [&](const char* text, double x, double y) {
-    gp << "set label " << quoted(text) << " at graph " << x << "," << y << " front font ',10' tc rgb '#202020'\n";
-  };
-  auto line = [&](double offset) {  // log10|dy| = log10|u| - offset
-    gp << "f(x) = x - (" << offset << ")\n";
-  };
   gp << "unset label\n";
-  bool has_line = false;
-  if (q[1] < 0 && q[0] > 0) {
-    line(0), has_line = true;
-    label("free", 0.05, 0.9), label("impact", 0.7, 0.1);
-  } else if (q[1] < 0) {
-    label("free", 0.05, 0.9);
-  } else if (q[0] > 0) {
-    if (phi > 1) line(std::log10(phi - 1)), has_line = true, label("release", 0.05, 0.9), label("contact", 0.7, 0.1);
-    else label("contact", 0.05, 0.9);
-  } else {
-    if (phi < 1) line(std::log10(1 - phi)), has_line = true, label("contact", 0.05, 0.9), label("release", 0.7, 0.1);
-    else label("release", 0.05, 0.9);
+  auto label = [&](const char* text, bool upper_left) {
+    gp << "set label " << quoted(text) << " at graph " << (upper_left ? "0.05,0.92" : "0.7,0.08")
+       << " front font ',10' tc rgb '#202020'\n";
+  };
+  // the case above-left of the line, the case below-right, and the line's offset (NaN: no line)
+  const char *above = "free", *below = "free";
+  double offset = std::nan("");
+  if (q[1] < 0 && q[0] > 0) above = "free", below = "impact", offset = 0;
+  else if (q[1] > 0 && q[0] > 0) {
+    above = "release", below = "contact";
+    if (phi > 1) offset = std::log10(phi - 1);
+    else above = "contact";
+  } else if (q[1] > 0) {
+    above = "contact", below = "release";
+    if (phi < 1) offset = std::log10(1 - phi);
+    else above = "release";
   }
-  if (!has_line) gp << "f(x) = NaN\n";
+  if (std::isnan(offset)) {
+    label(above, true);
+    gp << "f(x) = NaN\n";
+    return gp.str();
+  }
+  const bool shows_above = dy_high > u_low - offset, shows_below = dy_low < u_high - offset;
+  if (shows_above) label(above, true);
+  if (shows_below) label(below, !shows_above);
+  gp << "f(x) = x - (" << offset << ")\n";
   return gp.str();
 }
 
@@ -188,7 +195,7 @@ inline map_written write_map_files(const std::vector<double>& worst, const map_g
     const double phi = g.phis[std::size_t(p / 4)];
     char heading[160];
     std::snprintf(heading, sizeof heading, "u %s 0, dy %s 0, phi = %.3g", q[0] > 0 ? ">" : "<", q[1] > 0 ? ">" : "<", phi);
-    body << detail_map::cases_of(q, phi) << "set title " << quoted(heading) << "\n"
+    body << detail_map::cases_of(q, phi, g.u_low, g.u_high, g.dy_low, g.dy_high) << "set title " << quoted(heading) << "\n"
          << (p % 4 == 3 ? "set colorbox\n" : "unset colorbox\n")
          << "plot " << quoted(stem + ".dat") << " index " << p
          << " using 1:2:3 with image, f(x) with lines lw 2 lc rgb 'black'\n";
