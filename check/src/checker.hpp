@@ -23,6 +23,7 @@ struct options {
   double max_ulp = 4;
   double seconds = 10;   // of the fuzzing campaign
   long trials = 1000;    // per property of the suite
+  long sweep_trials = 24;  // per magnitude of the sweep (0: no sweep)
   std::uint64_t seed = 1;
 };
 
@@ -136,7 +137,9 @@ class checker {
   // domain, one variable at a time (the others as the domain draws them), and
   // |u| and |dy| together: (A.2) is homogeneous in them, so their common
   // scale is the size of the input.
-  void run_sweep(long trials_per_point = 24) {
+  void run_sweep() {
+    const long trials_per_point = options_.sweep_trials;
+    if (trials_per_point <= 0) return;
     const auto start = std::chrono::steady_clock::now();
     seeded_source source(options_.seed ^ 0x5bd1e995ULL);
     for (const property<T>& p : all_) {
@@ -254,6 +257,17 @@ class checker {
     }
   }
 
+  // The trials a shrink may move to: inside a scene's domain, those it holds
+  // (a boundary property's u is the boundary's, not the trial's).
+  std::vector<trial<T>> within_domain(std::vector<trial<T>> trials, bool boundary) const {
+    if (domain_.is_whole_range()) return trials;
+    std::erase_if(trials, [&](const trial<T>& t) {
+      const input<T> x{boundary ? domain_.draw_free_u() : t.x.u, t.x.dy, t.x.phi};
+      return !domain_.contains(x);
+    });
+    return trials;
+  }
+
   // Seconds one more shrink may take: a few each, and at most half a minute in
   // all, so that a slow candidate (a command started per batch) still finishes.
   double shrink_seconds() const { return std::clamp(30.0 - shrinking_, 0.0, 3.0); }
@@ -273,7 +287,8 @@ class checker {
   failure shrink(const property<T>& p, trial<T> t, std::string why, int which) {
     const auto start = std::chrono::steady_clock::now();
     for (int round = 0; round < 200 && seconds_since(start) < shrink_seconds(); ++round) {
-      const auto neighbours = simpler_trials(t);
+      const auto neighbours = within_domain(simpler_trials(t), p.name.rfind("continuity", 0) == 0);
+      if (neighbours.empty()) break;
       const auto [inputs, first] = probes_of(p, neighbours);
       const auto outcomes = candidate_.solve(as_double(inputs));
       bool simpler = false;
@@ -303,7 +318,7 @@ class checker {
     const auto start = std::chrono::steady_clock::now();
     for (int round = 0; round < 100 && seconds_since(start) < shrink_seconds(); ++round) {
       bool simpler = false;
-      for (const auto& n : simpler_trials(trial<T>{x, 0})) {
+      for (const auto& n : within_domain(simpler_trials(trial<T>{x, 0}), false)) {
         const auto o = candidate_.solve(as_double({n.x}));
         if (o[0].faulted()) {
           x = n.x;
@@ -492,7 +507,7 @@ class checker {
         trials.push_back(t);
       }
     const auto [inputs, first] = probes_of(p, trials);
-    const auto outcomes = candidate_.solve(as_double(inputs));
+    const auto outcomes = solve_past_faults(as_double(inputs));
     std::vector<long> fails(points.size(), 0);
     for (std::size_t t = 0; t < trials.size(); ++t) {
       std::vector<probe_result<T>> results;
@@ -507,25 +522,38 @@ class checker {
     return head + describe_sweep(points, fails, trials_per_point);
   }
 
+  // Every input's outcome: after a crash or a hang the rest are asked again,
+  // up to a few faults (each may cost a timeout); after those they stay not_run.
+  std::vector<outcome> solve_past_faults(const std::vector<input<double>>& inputs) {
+    std::vector<outcome> out;
+    for (int faults = 0; out.size() < inputs.size() && faults < 3; ++faults) {
+      const auto o = candidate_.solve({inputs.begin() + long(out.size()), inputs.end()});
+      std::size_t i = 0;
+      while (i < o.size() && (i == 0 || o[i].kind != outcome::status::not_run)) out.push_back(o[i++]);
+    }
+    out.resize(inputs.size());
+    return out;
+  }
+
   static std::string describe_sweep(const std::vector<double>& points, const std::vector<long>& fails, long per_point) {
     const std::size_t n = points.size();
     std::vector<bool> bad(n);
     std::size_t failing = 0;
     for (std::size_t i = 0; i < n; ++i) failing += (bad[i] = fails[i] > 0);
     const std::string range = power_text(points.front()) + " to " + power_text(points.back());
-    const std::string tally = " (" + std::to_string(failing) + " of " + std::to_string(n) + " magnitudes fail, " +
+    const std::string counts = " (" + std::to_string(failing) + " of " + std::to_string(n) + " magnitudes fail, " +
                               std::to_string(per_point) + " trials each)";
-    if (failing == 0) return "no failure found from " + range + tally;
-    if (failing == n) return "fails at every magnitude from " + range + tally;
+    if (failing == 0) return "no failure found from " + range + counts;
+    if (failing == n) return "fails at every magnitude from " + range + counts;
     std::size_t first_bad = 0, last_bad = n - 1;
     while (!bad[first_bad]) ++first_bad;
     while (!bad[last_bad]) --last_bad;
     const bool suffix = last_bad == n - 1 && std::all_of(bad.begin() + long(first_bad), bad.end(), [](bool b) { return b; });
     const bool prefix = first_bad == 0 && std::all_of(bad.begin(), bad.begin() + long(last_bad) + 1, [](bool b) { return b; });
     if (suffix)
-      return "holds up to " + power_text(points[first_bad - 1]) + ", fails from " + power_text(points[first_bad]) + tally;
+      return "holds up to " + power_text(points[first_bad - 1]) + ", fails from " + power_text(points[first_bad]) + counts;
     if (prefix)
-      return "fails up to " + power_text(points[last_bad]) + ", holds from " + power_text(points[last_bad + 1]) + tally;
+      return "fails up to " + power_text(points[last_bad]) + ", holds from " + power_text(points[last_bad + 1]) + counts;
     std::string at;
     for (std::size_t i = 0; i < n; ++i)
       if (bad[i] && (i == 0 || !bad[i - 1])) {
@@ -534,9 +562,9 @@ class checker {
         at += std::string(at.empty() ? "" : ", ") + power_text(points[i]) +
               (j > i ? " to " + power_text(points[j]) : std::string());
       }
-    if (first_bad == 0) return "fails at " + at + "; holds at the other magnitudes from " + range + tally;
+    if (first_bad == 0) return "fails at " + at + "; holds at the other magnitudes from " + range + counts;
     return "holds up to " + power_text(points[first_bad - 1]) + ", fails from " + power_text(points[first_bad]) +
-           ", not at every magnitude above: fails at " + at + tally;
+           ", not at every magnitude above: fails at " + at + counts;
   }
 
   contact::harness::candidate& candidate_;

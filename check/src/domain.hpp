@@ -111,6 +111,9 @@ class domain {
     return u_.holds(double(x.u)) && dy_.holds(double(x.dy)) && phi_.holds(double(x.phi));
   }
 
+  // A u that the domain holds: stands for a boundary property's u, which the boundary sets.
+  T draw_free_u() const { return T(u_.positive ? u_.most : -u_.most); }
+
   // One valid input of the domain, with its family.
   tagged<T> draw(seeded_source& source) const {
     using namespace contact::harness;

@@ -106,6 +106,10 @@ int main(int argc, char** argv) {
   app.add_option("--scene", a.scene,
                  "judge on a scene file's families (a path, or the name of a scene of scenes/, e.g. physical) "
                  "instead of the whole range");
+  app.add_option("--sweep-trials", o.sweep_trials,
+                 "trials at each magnitude of the sweep that finds where a failing property breaks (0: no sweep)")
+      ->check(CLI::Range(0L, 100000L))
+      ->capture_default_str();
   app.add_option("--map", a.map_dir, "also write DIR/error_map.png and .svg: the largest ulp error over |u| and |dy|");
   try {
     app.parse(argc, argv);
