@@ -27,7 +27,10 @@ inline std::string xml_escaped(const std::string& text) {
   return out;
 }
 
-inline bool write_junit(const std::string& path, const std::string& candidate, const std::deque<record>& records) {
+// The domain and the per-family table go to the suite's properties and
+// system-out; where a property breaks goes to its failure's text.
+inline bool write_junit(const std::string& path, const std::string& candidate, const std::string& domain,
+                        const std::string& table, const std::deque<record>& records) {
   std::ofstream xml(path);
   if (!xml) return false;
   long failures = 0;
@@ -39,7 +42,8 @@ inline bool write_junit(const std::string& path, const std::string& candidate, c
   xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<testsuites>\n<testsuite name=\"contact-check\" tests=\"" << records.size() << "\" failures=\"" << failures
       << "\" errors=\"0\" time=\"" << seconds << "\">\n"
-      << "  <properties><property name=\"candidate\" value=\"" << xml_escaped(candidate) << "\"/></properties>\n";
+      << "  <properties><property name=\"candidate\" value=\"" << xml_escaped(candidate)
+      << "\"/><property name=\"domain\" value=\"" << xml_escaped(domain) << "\"/></properties>\n";
   for (const auto& r : records) {
     xml << "  <testcase classname=\"contact-check\" name=\"" << xml_escaped(r.name) << "\" time=\"" << r.seconds << "\"";
     if (!r.failed) {
@@ -51,12 +55,14 @@ inline bool write_junit(const std::string& path, const std::string& candidate, c
       body += f.reason + "\n";
       for (const auto& line : f.lines) body += "  " + line + "\n";
     }
+    for (const auto& line : r.where) body += "where: " + line + "\n";
     const std::string message =
         r.claim + ": fails on " + std::to_string(r.failed) + " of " + std::to_string(r.tried) + " trials";
     xml << ">\n    <failure message=\"" << xml_escaped(message) << "\">" << xml_escaped(body) << "</failure>\n"
         << "  </testcase>\n";
   }
-  xml << "</testsuite>\n</testsuites>\n";
+  xml << "  <system-out>per family and case:\n" << xml_escaped(table) << "</system-out>\n"
+      << "</testsuite>\n</testsuites>\n";
   return static_cast<bool>(xml);
 }
 

@@ -17,6 +17,7 @@
 #include "contact/detail/float_tools.hpp"
 #include "contact/harness/candidate.hpp"
 #include "contact/harness/families.hpp"
+#include "domain.hpp"
 #include "exact.hpp"
 
 namespace check {
@@ -29,6 +30,7 @@ template <class T>
 struct trial {
   input<T> x;
   long k = 0;
+  int family = -1;  // the domain's family that x was drawn from, if any
 };
 
 // The candidate's answer and the certified root (absent for invalid input) of one probe.
@@ -116,8 +118,11 @@ std::vector<input<T>> the_trial(const trial<T>& t) {
 }
 
 template <class T>
-trial<T> any_valid(seeded_source& source) {
-  return {contact::harness::any_input<T>(source), 0};
+std::function<trial<T>(seeded_source&)> any_valid(const domain<T>& d) {
+  return [&d](seeded_source& source) {
+    const tagged<T> t = d.draw(source);
+    return trial<T>{t.x, 0, t.family};
+  };
 }
 
 // A single-input property from a check of one answer.
@@ -131,17 +136,14 @@ property<T> single(std::string name, std::string claim, std::function<trial<T>(s
 // Two probes either side of a case boundary, `k` ulps from it, must move no
 // more than the exact root does between them, give or take max_ulp at each.
 template <class T>
-property<T> continuity(std::string name, std::string claim, bool contact_release, double max_ulp) {
+property<T> continuity(std::string name, std::string claim, bool contact_release, double max_ulp, const domain<T>& d) {
   auto on_boundary = [contact_release](const T& dy, const T& phi, long steps) {
     return contact_release ? contact::harness::on_contact_release_boundary(dy, phi, steps)
                            : contact::harness::on_free_impact_boundary(dy, phi, steps);
   };
   return {std::move(name), std::move(claim),
-          [contact_release](seeded_source& source) {
-            using std::fabs;
-            const T dy = fabs(contact::harness::any_finite<T>(source));
-            return trial<T>{{0, contact_release ? dy : T(-dy), contact::harness::any_phi<T>(source)},
-                            source.integer(-3, 2)};
+          [contact_release, &d](seeded_source& source) {
+            return trial<T>{d.draw_for_boundary(source, contact_release), source.integer(-3, 2)};
           },
           [on_boundary](const trial<T>& t) {
             return std::vector<input<T>>{on_boundary(t.x.dy, t.x.phi, t.k), on_boundary(t.x.dy, t.x.phi, t.k + 1)};
@@ -160,24 +162,29 @@ property<T> continuity(std::string name, std::string claim, bool contact_release
           }};
 }
 
+// The properties, drawing from the domain d (which must outlive them). Inside
+// a scene's domain, phi = 0 and invalid input are not drawn: the properties
+// about them are the whole range's.
 template <class T>
-std::vector<property<T>> properties(double max_ulp) {
+std::vector<property<T>> properties(double max_ulp, const domain<T>& d) {
   using contact::harness::any_finite;
   using contact::harness::any_phi;
   std::vector<property<T>> list;
-  list.push_back(single<T>("forward_error", "s lies within max-ulp ulps of the certified root", any_valid<T>,
+  list.push_back(single<T>("forward_error", "s lies within max-ulp ulps of the certified root", any_valid<T>(d),
                            [max_ulp](const probe_result<T>& p) { return forward_error(p, max_ulp); }));
   list.push_back(single<T>("residual", "the exact residual of (A.2) changes sign within max-ulp ulps of s",
-                           any_valid<T>, [max_ulp](const probe_result<T>& p) { return residual(p, max_ulp); }));
-  list.push_back(single<T>("case", "the case is the exact case", any_valid<T>, same_case<T>));
-  list.push_back(single<T>("complementarity", "s lies on the side of dy that its case claims", any_valid<T>,
+                           any_valid<T>(d), [max_ulp](const probe_result<T>& p) { return residual(p, max_ulp); }));
+  list.push_back(single<T>("case", "the case is the exact case", any_valid<T>(d), same_case<T>));
+  list.push_back(single<T>("complementarity", "s lies on the side of dy that its case claims", any_valid<T>(d),
                            complementarity<T>));
-  list.push_back(continuity<T>("continuity_free_impact", "s is continuous across u = -dy, (A.29)/(A.30)", false, max_ulp));
+  list.push_back(
+      continuity<T>("continuity_free_impact", "s is continuous across u = -dy, (A.29)/(A.30)", false, max_ulp, d));
   list.push_back(continuity<T>("continuity_contact_release", "s is continuous across u = dy (phi - 1), (A.31)/(A.32)",
-                               true, max_ulp));
+                               true, max_ulp, d));
   list.push_back({"monotonicity", "s is non-increasing in u (within max-ulp ulps at each end)",
-                  [](seeded_source& source) {
-                    return trial<T>{contact::harness::any_input<T>(source), 1L << source.integer(0, 24)};
+                  [&d](seeded_source& source) {
+                    const tagged<T> t = d.draw(source);
+                    return trial<T>{t.x, 1L << source.integer(0, 24), t.family};
                   },
                   [](const trial<T>& t) {
                     return std::vector<input<T>>{t.x, {contact::detail::ulp_steps(t.x.u, t.k), t.x.dy, t.x.phi}};
@@ -194,9 +201,10 @@ std::vector<property<T>> properties(double max_ulp) {
                     return "s grows by " + number_text(excess) + " ulps more than the exact root as u grows";
                   }});
   list.push_back({"homogeneity", "(u, dy) -> (2^k u, 2^k dy) scales s by 2^k (within max-ulp ulps at each end)",
-                  [](seeded_source& source) {
-                    const long k = source.integer(1, 64);
-                    return trial<T>{contact::harness::any_input<T>(source), source.integer(0, 1) ? k : -k};
+                  [&d](seeded_source& source) {
+                    const long k = d.homogeneity_exponent(source);
+                    const tagged<T> t = d.draw(source);
+                    return trial<T>{t.x, k, t.family};
                   },
                   [](const trial<T>& t) {
                     using std::ldexp;
@@ -221,6 +229,7 @@ std::vector<property<T>> properties(double max_ulp) {
                     return "s(2^k u, 2^k dy) - 2^k s(u, dy) is off by " + number_text(excess) + " ulps (k = " +
                            std::to_string(k) + ")";
                   }});
+  if (!d.is_whole_range()) return list;
   list.push_back(single<T>("phi_zero", "phi = 0 gives s = -u exactly, with the exact case",
                            [](seeded_source& source) {
                              return trial<T>{{any_finite<T>(source), any_finite<T>(source), T(0)}, 0};

@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
   for (const auto& s : scenes) results.push_back(report::measure(s, options));
   report::measure_batch_across_scenes(results);
   info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const bool plotted = report::write_report(out_dir, results, info, raw);
+  const bool plotted = report::write_report(out_dir, results, info, raw) && report::write_candidate_maps(out_dir, scenes);
   std::fprintf(stderr, "contact-report: wrote %s/report.md, results.csv, results.json%s in %.1f s\n", out_dir.c_str(),
                plotted ? " and plots/" : "", info.seconds);
   return plotted ? 0 : 3;
