@@ -18,6 +18,8 @@
 #include <boost/math/special_functions/next.hpp>
 #include <boost/math/tools/precision.hpp>
 
+#include "emulated_fma.hpp"
+
 // Declared, not included: the core solver needs no quadmath header.
 namespace boost::multiprecision::backends {
 struct float128_backend;
@@ -85,13 +87,24 @@ struct has_fused_fma<boost::multiprecision::number<
     boost::multiprecision::backends::cpp_bin_float<Digits, Base, Allocator, Exponent, MinExponent, MaxExponent>, Templates>>
     : std::false_type {};
 
+// T's fma where it is fused and fast; for x87 long double and binary128 the
+// same single rounding in integer arithmetic (emulated_fma.hpp).
+template <class T>
+T fma_rounded_once(const T& a, const T& b, const T& c) {
+  if constexpr (emulated_format<T>::available) {
+    return emulated_fma(a, b, c);
+  } else {
+    using std::fma;
+    return fma(a, b, c);
+  }
+}
+
 // a * b == product + error exactly, barring overflow and underflow of the error.
 template <class T>
 exact_pair<T> two_prod(const T& a, const T& b) {
-  using std::fma;
   const T product = a * b;
   if constexpr (has_fused_fma<T>::value) {
-    return {product, fma(a, b, -product)};
+    return {product, fma_rounded_once(a, b, T(-product))};
   } else {  // Veltkamp's split and Dekker's product, exact for any radix-2 T
     using std::ldexp;
     const T splitter = ldexp(T(1), (precision_of<T>() + 1) / 2) + 1;
@@ -134,8 +147,7 @@ T sum_of_head_and_tail(const T& head, const T& tail) {
 template <class T>
 T fused_multiply_add(const T& a, const T& b, const T& c) {
   if constexpr (has_fused_fma<T>::value) {
-    using std::fma;
-    return fma(a, b, c);
+    return fma_rounded_once(a, b, c);
   } else {
     const auto product = two_prod(a, b);
     const auto sum = two_sum(product.high, c);
