@@ -10,8 +10,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <boost/multiprecision/number.hpp>
 
@@ -49,11 +51,23 @@ struct emulated_format<long double> {
   static constexpr bool available =
       std::numeric_limits<long double>::digits == 64 && std::numeric_limits<long double>::max_exponent == 16384;
   static constexpr int digits = 64;
+  // x's parts, read where x lies rather than through a copy of x (a load of
+  // part of an x87 store that has just been made waits for the store)
+  static std::uint64_t significand_of(const long double& x) {
+    std::uint64_t significand;
+    std::memcpy(&significand, &x, sizeof significand);
+    return significand;
+  }
+  static unsigned sign_exponent_of(const long double& x) {
+    std::uint16_t sign_exponent;
+    std::memcpy(&sign_exponent, reinterpret_cast<const unsigned char*>(&x) + 8, sizeof sign_exponent);
+    return sign_exponent;
+  }
+  static unsigned exponent_field(const long double& x) { return sign_exponent_of(x) & 0x7fffu; }
   // whether x is normal (not zero, subnormal, infinite or NaN), and its parts
   static bool unpack(const long double& x, unpacked_binary& out) {
-    const uint128 bits = std::bit_cast<uint128>(x);
-    const std::uint64_t significand = std::uint64_t(bits);
-    const unsigned sign_exponent = unsigned(bits >> 64) & 0xffffu;
+    const std::uint64_t significand = significand_of(x);
+    const unsigned sign_exponent = sign_exponent_of(x);
     const unsigned field = sign_exponent & 0x7fffu;
     out = {significand, int(field) - wide_bias - 63, (sign_exponent >> 15) != 0};
     return field - 1 < 0x7ffeu && (significand >> 63) != 0;
@@ -62,6 +76,15 @@ struct emulated_format<long double> {
   static long double pack(bool negative, int top, uint128 significand) {
     const uint128 sign_exponent = (uint128(negative) << 15) | uint128(top + wide_bias);
     return std::bit_cast<long double>(uint128(std::uint64_t(significand)) | (sign_exponent << 64));
+  }
+  // |x| (finite) as an integer that counts the values from zero up: the
+  // exponent field above the significand without its explicit leading bit
+  static uint128 magnitude_key(const long double& x) {
+    return (uint128(sign_exponent_of(x) & 0x7fffu) << 63) | (significand_of(x) & ~(std::uint64_t(1) << 63));
+  }
+  static long double from_magnitude_key(uint128 key, bool negative) {
+    const uint128 field = key >> 63, lead = field != 0 ? uint128(1) << 63 : 0;
+    return std::bit_cast<long double>((key & ~(~uint128(0) << 63)) | lead | ((field | uint128(negative) << 15) << 64));
   }
 };
 
@@ -83,6 +106,13 @@ struct emulated_format<boost::multiprecision::number<boost::multiprecision::back
   static type pack(bool negative, int top, uint128 significand) {
     const uint128 bits = (uint128(negative) << 127) | (uint128(top + wide_bias) << 112) | (significand - hidden);
     return type(std::bit_cast<__float128>(bits));
+  }
+  template <class X>  // IEEE's bit patterns of magnitudes count the values already
+  static uint128 magnitude_key(const X& x) {
+    return std::bit_cast<uint128>(x.backend().value()) & ~(uint128(1) << 127);
+  }
+  static type from_magnitude_key(uint128 key, bool negative) {
+    return type(std::bit_cast<__float128>(key | uint128(negative) << 127));
   }
 };
 
@@ -145,7 +175,8 @@ inline int top_bit(const uint256& x) {  // x != 0
   return x.high != 0 ? 128 + top_of(x.high) : top_of(x.low);
 }
 
-// a * b + c rounded once, for the types of emulated_format.
+// a * b + c rounded once in integer arithmetic, for the types of
+// emulated_format (emulated_fma, below, calls it).
 //
 // Zero factors, a zero c, and subnormal, infinite or NaN operands are answered
 // first (the library's fma takes the last three). Otherwise the exact product
@@ -166,7 +197,7 @@ inline int top_bit(const uint256& x) {  // x != 0
 // least normal value goes to the library fma, which rounds it once among the
 // subnormals.
 template <class T>
-T emulated_fma(const T& a, const T& b, const T& c) {
+T fma_in_integers(const T& a, const T& b, const T& c) {
   using format = emulated_format<T>;
   constexpr int p = format::digits;
   constexpr int least_binade = 1 - wide_bias, largest_binade = wide_bias;
@@ -236,6 +267,74 @@ T emulated_fma(const T& a, const T& b, const T& c) {
   }
   if (binade > largest_binade) return negative ? -std::numeric_limits<T>::infinity() : std::numeric_limits<T>::infinity();
   return format::pack(negative, binade, significand);
+}
+
+// The neighbour of a finite x above (up) or below it, by one step of its
+// magnitude's key; from a zero of either sign, the least subnormal.
+template <class T>
+T neighbour_by_bits(const T& x, bool up) {
+  using format = emulated_format<T>;
+  const uint128 key = format::magnitude_key(x);
+  if (key == 0) return format::from_magnitude_key(1, !up);
+  using std::signbit;
+  const bool negative = signbit(x);
+  return format::from_magnitude_key(up != negative ? key + 1 : key - 1, negative);
+}
+
+// a * b + c rounded once in x87 arithmetic, for factors with binades in
+// [-4000, 4000] and |c| below 2^8001, by Boldo and Melquiond's emulation
+// ("Emulation of FMA and correctly rounded sums: proved algorithms using
+// rounding to odd", IEEE TC 57(4), 2008): ph + pl = ab exactly (Veltkamp's
+// split by 2^32 + 1 and Dekker's product: no split overflows and no partial
+// product underflows in that range), th + tl = c + ph exactly (TwoSum), y =
+// tl + pl rounded to odd (v, the nearest, stepped to its odd neighbour toward
+// y when v is even and y is not v), and the result th + v rounded once. Why
+// that is ab + c rounded once: if y is a p-bit number, v = y and th + v = ab +
+// c exactly. Otherwise tl != 0, so c + ph was inexact and |th| >= |ph| / 2
+// (Sterbenz: else it were exact), hence |y| <= |tl| + |pl| < 2 ulp(th) and y's
+// ulp g is at most 2^(1 - p) ulp(th); y, a sum of multiples of the least
+// subnormal that is not a p-bit number, is normal. th is a multiple of 2g, and
+// so is every p-bit number and midpoint near ab + c (they lie in th's binade
+// or the one below, so they are multiples of ulp(th) / 4): th + y lies
+// strictly between th + t and th + t + g (t, t + g the neighbours of y), and
+// no rounding boundary lies in that gap, nor on th + v, its odd end, so th + y
+// and th + v round alike. No result here is subnormal unless c + ph
+// cancelled exactly (then v = y), and overflow is decided by the rounding
+// with an unbounded exponent either way. A zero factor (or a subnormal,
+// infinite or NaN operand) is outside the range: fma_in_integers answers it.
+[[gnu::always_inline]] inline long double fma_by_odd_rounding(long double a, long double b, long double c) {
+  const long double splitter = 4294967297.0L;  // 2^32 + 1
+  auto split = [splitter](long double x) {
+    const long double scaled = splitter * x, high = scaled - (scaled - x);
+    return std::pair<long double, long double>{high, x - high};
+  };
+  auto two_sum = [](long double x, long double y) {
+    const long double sum = x + y, y_virtual = sum - x, x_virtual = sum - y_virtual;
+    return std::pair<long double, long double>{sum, (x - x_virtual) + (y - y_virtual)};
+  };
+  const long double product = a * b;
+  const auto [a_high, a_low] = split(a);
+  const auto [b_high, b_low] = split(b);
+  const long double product_low = ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
+  const auto [high, low] = two_sum(c, product);
+  auto [tail, tail_error] = two_sum(low, product_low);
+  if (tail_error != 0 && (emulated_format<long double>::magnitude_key(tail) & 1) == 0)
+    tail = neighbour_by_bits(tail, tail_error > 0);
+  return high + tail;
+}
+
+// a * b + c rounded once, for the types of emulated_format: x87 long double by
+// odd rounding where its range allows, else in integers.
+template <class T>
+[[gnu::always_inline]] inline T emulated_fma(const T& a, const T& b, const T& c) {
+  if constexpr (std::is_same_v<T, long double>) {
+    using format = emulated_format<long double>;
+    constexpr unsigned lowest = wide_bias - 4000, factor_span = 8000, c_highest = wide_bias + 8000;
+    if ((format::exponent_field(a) - lowest <= factor_span) & (format::exponent_field(b) - lowest <= factor_span) &
+        (format::exponent_field(c) <= c_highest)) [[likely]]
+      return fma_by_odd_rounding(a, b, c);
+  }
+  return fma_in_integers(a, b, c);
 }
 
 }  // namespace contact::detail
