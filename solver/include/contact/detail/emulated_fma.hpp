@@ -70,7 +70,7 @@ struct emulated_format<long double> {
     const unsigned sign_exponent = sign_exponent_of(x);
     const unsigned field = sign_exponent & 0x7fffu;
     out = {significand, int(field) - wide_bias - 63, (sign_exponent >> 15) != 0};
-    return field - 1 < 0x7ffeu && (significand >> 63) != 0;
+    return (field - 1 < 0x7ffeu) & ((significand >> 63) != 0);
   }
   // the normal number significand 2^(top - 63), significand in [2^63, 2^64)
   static long double pack(bool negative, int top, uint128 significand) {
@@ -83,7 +83,7 @@ struct emulated_format<long double> {
     return (uint128(sign_exponent_of(x) & 0x7fffu) << 63) | (significand_of(x) & ~(std::uint64_t(1) << 63));
   }
   static long double from_magnitude_key(uint128 key, bool negative) {
-    const uint128 field = key >> 63, lead = field != 0 ? uint128(1) << 63 : 0;
+    const uint128 field = key >> 63, lead = uint128(field != 0) << 63;
     return std::bit_cast<long double>((key & ~(~uint128(0) << 63)) | lead | ((field | uint128(negative) << 15) << 64));
   }
 };
@@ -127,15 +127,16 @@ inline uint256 multiply(uint128 a, uint128 b, bool narrow) {
   const uint128 a0 = a & mask, a1 = a >> 64, b0 = b & mask, b1 = b >> 64;
   const uint128 middle = a0 * b1 + a1 * b0;  // below 2^114 for factors below 2^113
   const uint128 low = a0 * b0 + (middle << 64);
-  const uint128 carry = low < (middle << 64) ? 1 : 0;
-  return {a1 * b1 + (middle >> 64) + carry, low};
+  return {a1 * b1 + (middle >> 64) + uint128(low < (middle << 64)), low};
 }
+
+// The code below has few branches, each of which the tests take both ways:
+// a shift by 128 - s for s in [0, 127] is written (v >> 1) >> (127 - s).
 
 // x 2^shift, shift in [0, 255], for an x that stays below 2^256
 inline uint256 shifted_left(uint256 x, int shift) {
   if (shift >= 128) return {x.low << (shift - 128), 0};
-  if (shift == 0) return x;
-  return {(x.high << shift) | (x.low >> (128 - shift)), x.low << shift};
+  return {(x.high << shift) | ((x.low >> 1) >> (127 - shift)), x.low << shift};
 }
 
 // x 2^-shift, shift > 0, truncated, with the last bit set if any bit was lost
@@ -146,7 +147,7 @@ inline uint256 shifted_right_sticky(uint256 x, int shift) {
   uint256 r;
   if (shift >= 128) {
     const int s = shift - 128;
-    lost = x.low | (s == 0 ? 0 : (x.high << (128 - s)));
+    lost = x.low | ((x.high << 1) << (127 - s));
     r = {0, x.high >> s};
   } else {
     lost = x.low << (128 - shift);
@@ -156,7 +157,7 @@ inline uint256 shifted_right_sticky(uint256 x, int shift) {
   return r;
 }
 
-inline bool less(const uint256& a, const uint256& b) { return a.high < b.high || (a.high == b.high && a.low < b.low); }
+inline bool less(const uint256& a, const uint256& b) { return (a.high < b.high) | ((a.high == b.high) & (a.low < b.low)); }
 
 inline uint256 plus(const uint256& a, const uint256& b) {
   const uint128 low = a.low + b.low;
@@ -167,12 +168,15 @@ inline uint256 minus(const uint256& a, const uint256& b) {  // a >= b
   return {a.high - b.high - uint128(a.low < b.low), a.low - b.low};
 }
 
-inline int top_bit(const uint256& x) {  // x != 0
-  auto top_of = [](uint128 v) {
-    const std::uint64_t high = std::uint64_t(v >> 64);
-    return high != 0 ? 127 - std::countl_zero(high) : 63 - std::countl_zero(std::uint64_t(v));
-  };
-  return x.high != 0 ? 128 + top_of(x.high) : top_of(x.low);
+// the index of the leading bit (-1 for 0), from countl_zero, which is 64 for a zero word
+inline int top_bit(uint128 v) {
+  const int high_zeros = std::countl_zero(std::uint64_t(v >> 64)), low_zeros = std::countl_zero(std::uint64_t(v));
+  return 127 - high_zeros - (low_zeros & -int(high_zeros == 64));
+}
+
+inline int top_bit(const uint256& x) {
+  const int high = top_bit(x.high), low = top_bit(x.low), high_set = -int(high >= 0);
+  return ((128 + high) & high_set) | (low & ~high_set);
 }
 
 // a * b + c rounded once in integer arithmetic, for the types of
@@ -241,30 +245,17 @@ T fma_in_integers(const T& a, const T& b, const T& c) {
     using std::fma;
     return fma(a, b, c);
   }
-  uint128 significand;
-  if (top < p) {  // at most p bits: exact
-    significand = sum.low << (p - 1 - top);
-  } else {
-    const int cut = top - p + 1;  // the bits below it are rounded off: the guard bit, then the sticky bits
-    significand = cut >= 128 ? sum.high >> (cut - 128) : (sum.low >> cut) | (sum.high << (128 - cut));
-    const int guard_position = cut - 1;
-    const bool guard = guard_position >= 128 ? ((sum.high >> (guard_position - 128)) & 1) != 0
-                                             : ((sum.low >> guard_position) & 1) != 0;
-    bool sticky;
-    if (guard_position >= 128) {
-      const int s = guard_position - 128;
-      sticky = sum.low != 0 || (s != 0 && (sum.high << (128 - s)) != 0);
-    } else {
-      sticky = guard_position != 0 && (sum.low << (128 - guard_position)) != 0;
-    }
-    if (guard && (sticky || (significand & 1) != 0)) {
-      ++significand;
-      if (significand >> p) {
-        significand >>= 1;
-        ++binade;
-      }
-    }
-  }
+  // the leading bit to 255: the p bits of the significand, then the guard
+  // bit, all in the high half (p <= 113), then the sticky bits
+  const uint256 normalized = shifted_left(sum, 255 - top);
+  uint128 significand = normalized.high >> (128 - p);
+  const uint128 below = normalized.high & ((uint128(1) << (128 - p)) - 1);
+  const uint128 half = uint128(1) << (127 - p);
+  const bool guard = (below & half) != 0, sticky = ((below & (half - 1)) != 0) | (normalized.low != 0);
+  significand += uint128(guard & (sticky | ((significand & 1) != 0)));  // to nearest, ties to even
+  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
+  significand >>= carry;
+  binade += int(carry);
   if (binade > largest_binade) return negative ? -std::numeric_limits<T>::infinity() : std::numeric_limits<T>::infinity();
   return format::pack(negative, binade, significand);
 }
