@@ -1,10 +1,12 @@
-// a * b + c rounded once (to nearest, ties to even) in integer arithmetic, for
-// the formats whose library fma is a software emulation that saves, changes and
-// restores the floating-point environment on every call (glibc's fmal for x87
-// long double, libquadmath's fmaq for binary128), and costs far more than the
-// whole closed form around it. The result is the library's, bit for bit: an fma
-// rounded once has one correct answer (tests/emulated_fma_test.cpp holds it to
-// MPFR). Every other type keeps its own fma.
+// a * b + c rounded once (to nearest, ties to even), for the formats whose
+// library fma is a software emulation that saves, changes and restores the
+// floating-point environment on every call (glibc's fmal for x87 long double,
+// libquadmath's fmaq for binary128), and costs far more than the whole closed
+// form around it: in integer arithmetic (fma_in_integers), and for x87 long
+// double inside a wide range by rounding to odd in x87 arithmetic
+// (fma_by_odd_rounding). The result is the library's, bit for bit: an fma
+// rounded once has one correct answer (tests/emulated_fma_test.cpp holds both
+// to MPFR). Every other type keeps its own fma.
 #pragma once
 
 #include <bit>
