@@ -48,6 +48,12 @@ TEST(Neighbours, StepAsBoostDoesInDoubleAndFloat) {
   expect_neighbours_as_boost<float>(4);
 }
 
+// x87 long double and binary128 step their bits too (detail/emulated_fma.hpp)
+TEST(Neighbours, StepAsBoostDoesInLongDoubleAndFloat128) {
+  expect_neighbours_as_boost<long double>(5);
+  expect_neighbours_as_boost<float128>(6);
+}
+
 // ulp_steps moves by k representable values, through zero, and stops at the
 // largest finite value: a finite input stays finite.
 template <class T>
@@ -340,6 +346,26 @@ TEST(SquareRoot, Float128LibrarySqrtIsNotAlwaysCorrectlyRounded) {
     EXPECT_EQ(detail::square_root(float128(x * x)), x);
   }
   EXPECT_GT(off, 0) << "sqrtq rounded every square root correctly: square_root's correction may no longer be needed";
+}
+
+// The hard inputs of square_root's midpoint tests: x the square of a midpoint
+// between neighbouring float128 values, rounded to float128, so that the root
+// lies within a few ulps of x of that midpoint, on either side.
+TEST(SquareRoot, Float128RoundsToNearestNextToMidpoints) {
+  harness::seeded_source source(20261127);
+  const int bits = detail::precision_of<float128>();
+  long wrong = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float128 r = harness::significand<float128>(source);
+    reference::real midpoint(4 * bits), square(4 * bits), root(bits);
+    mpfr_add(midpoint.get(), reference::exactly(r, 4 * bits).get(), reference::exactly(detail::next_up(r), 4 * bits).get(), MPFR_RNDN);
+    mpfr_div_2ui(midpoint.get(), midpoint.get(), 1, MPFR_RNDN);
+    mpfr_sqr(square.get(), midpoint.get(), MPFR_RNDN);  // exact at 4 bits
+    const float128 x = detail::ulp_steps(float128(square.to_string(45).c_str()), long(i % 5) - 2);  // near it
+    mpfr_sqrt(root.get(), reference::exactly(x, 2 * bits).get(), MPFR_RNDN);
+    wrong += mpfr_equal_p(reference::exactly(detail::square_root(x), 2 * bits).get(), root.get()) == 0;
+  }
+  EXPECT_EQ(wrong, 0);
 }
 
 TEST(SquareRoot, Float128SpecialValuesPassThrough) {

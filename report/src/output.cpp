@@ -305,6 +305,49 @@ void write_stable_by_type(std::ostream& md, const std::vector<const scene_result
   md << "\n";
 }
 
+// For each scene that times textbook and stable in a type wider than double:
+// each type's stable path against its own textbook, with rounded and newton.
+// A type's rows are timed in the same rounds, so each ratio divides two
+// medians measured side by side.
+void write_cost_by_type(std::ostream& md, const std::vector<const scene_result*>& scenes, json& headline) {
+  const std::string textbook = name_of(method::textbook), stable = name_of(method::stable),
+                    rounded = name_of(method::rounded), newton = name_of(method::newton);
+  for (const auto* r : scenes) {
+    std::vector<std::string> types;
+    bool wider = false;
+    for (std::string_view name : contact::type_names) {
+      const std::string type(name);
+      if (!timing_of(*r, type, textbook) || !timing_of(*r, type, stable)) continue;
+      types.push_back(type);
+      wider = wider || (type != double_type && name != contact::type_name<float>);
+    }
+    if (!wider) continue;
+    md << "### What each precision costs against its own textbook (scene " << r->s.name << ")\n\n"
+       << "ns per solve (medians); each ratio divides two medians of one type, timed in the same rounds.\n\n"
+       << "| type | textbook | stable | stable / textbook | rounded | rounded / stable | newton |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto& type : types) {
+      const auto *t = timing_of(*r, type, textbook), *s = timing_of(*r, type, stable);
+      const auto *ro = timing_of(*r, type, rounded), *n = timing_of(*r, type, newton);
+      json entry = {{"textbook", number(t->median)}, {"stable", number(s->median)},
+                    {"stable_over_textbook", number(s->median / t->median)}};
+      md << "| " << type << " | " << format_ns(t->median) << " | " << format_ns(s->median) << " | **"
+         << format_ratio(s->median / t->median) << "** | ";
+      if (ro) {
+        md << format_ns(ro->median) << " | " << format_ratio(ro->median / s->median) << " | ";
+        entry["rounded"] = number(ro->median);
+        entry["rounded_over_stable"] = number(ro->median / s->median);
+      } else {
+        md << "— | — | ";
+      }
+      md << (n ? format_ns(n->median) : std::string("—")) << " |\n";
+      if (n) entry["newton"] = number(n->median);
+      headline["cost_by_type"][r->s.name][type] = entry;
+    }
+    md << "\n";
+  }
+}
+
 // The throughput of each batch kernel: batch (the target dispatch chose), then
 // each target's kernel alone, streamed and in cache.
 void write_batch_headline(std::ostream& md, const scene_result& r, const run_info& info, json& headline) {
@@ -413,6 +456,7 @@ void write_headline(std::ostream& md, const std::vector<scene_result>& scenes, c
     write_double_iterations(md, algorithms, with_runs, headline);
   }
   write_stable_by_type(md, with_runs, headline);
+  write_cost_by_type(md, with_runs, headline);
   write_batch_across_scenes(md, scenes, headline);
   for (const auto& r : scenes)
     if (!r.throughput.empty()) write_batch_headline(md, r, info, headline);
@@ -820,7 +864,11 @@ bool write_report(const std::string& directory, const std::vector<scene_result>&
      << " s.\n\n"
      << "- **CPU:** " << info.cpu << "\n"
      << "- **Batch targets** the library holds: " << join(held) << "; this CPU supports: " << join(supported)
-     << "; dispatch chose: **" << info.batch_chosen << "** (the `batch` rows).\n\n"
+     << "; dispatch chose: **" << info.batch_chosen << "** (the `batch` rows).\n"
+     << "- **Ratios measured side by side:** within a scene, each type's algorithms are timed in turn in every "
+        "round, so a ratio of two algorithms in one type (stable / textbook, rounded / stable) divides medians of "
+        "the same rounds; batch across scenes has rounds of its own (below). Figures of different scenes or types "
+        "are timed apart.\n\n"
      << "Every figure below is measured in this run; `results.csv` and `results.json` hold the same figures "
         "with full precision.\n\n";
   if (std::find(plots.begin(), plots.end(), "headline") != plots.end()) {

@@ -93,7 +93,7 @@ min_time = 0.005
 
 [[run]]
 types = ["long_double", "cpp_bin_float_50"]
-algorithms = ["stable", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
+algorithms = ["textbook", "stable", "boost_newton", "boost_halley", "boost_toms748", "practitioner_newton"]
 checks = ["accuracy", "timing"]
 samples = 40
 timing_inputs = 32
@@ -234,6 +234,7 @@ std::set<std::string> measured_in_small_scene() {
   for (const auto& peer : iterative_peers)
     for (const char* type : {"double", "float", "long_double", "cpp_bin_float_50"}) out.insert(type + ("/" + peer));
   for (const char* type : {"float", "long_double", "cpp_bin_float_50"}) out.insert(std::string(type) + "/stable");
+  for (const char* type : {"long_double", "cpp_bin_float_50"}) out.insert(std::string(type) + "/textbook");
   out.insert("float/newton");
   return out;
 }
@@ -946,6 +947,32 @@ TEST_F(tool, the_header_names_the_cpu_model) {
   ASSERT_EQ(status_, 0) << stderr_;
   const std::string header = markdown_.substr(0, markdown_.find("## Headline figures"));
   EXPECT_NE(header.find("- **CPU:** " + cpu_model_name() + "\n"), std::string::npos) << header;
+}
+
+TEST_F(tool, the_header_says_which_ratios_are_measured_side_by_side) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  const std::string header = markdown_.substr(0, markdown_.find("## Headline figures"));
+  EXPECT_NE(header.find("- **Ratios measured side by side:** within a scene, each type's algorithms are timed in turn"),
+            std::string::npos)
+      << header;
+}
+
+// Where a scene times textbook and stable in a type wider than double, the
+// headline table of what each precision costs divides each type's stable
+// median by its own textbook median, in every type that times both.
+TEST_F(tool, the_cost_table_divides_each_type_s_stable_by_its_own_textbook) {
+  ASSERT_EQ(status_, 0) << stderr_;
+  std::map<std::string, double> median;
+  for (const auto& t : scene()["timing"])
+    median[t["type"].get<std::string>() + "/" + t["algorithm"].get<std::string>()] = value_of(t["ns_median"]);
+  std::set<std::string> types;
+  for (const auto& row : table(markdown_, "| type | textbook | stable | stable / textbook |")) {
+    types.insert(row[0]);
+    const double ratio = median.at(row[0] + "/stable") / median.at(row[0] + "/textbook");
+    EXPECT_EQ(row[3], "**" + report::format_ratio(ratio) + "**") << row[0];
+    EXPECT_DOUBLE_EQ(value_of(results_["headline"]["cost_by_type"]["small"][row[0]]["stable_over_textbook"]), ratio);
+  }
+  EXPECT_EQ(types, (std::set<std::string>{"double", "long_double", "cpp_bin_float_50"}));
 }
 
 TEST_F(tool, the_header_names_the_targets_the_library_holds_and_those_the_cpu_supports) {

@@ -266,6 +266,11 @@ gap_pair<T> half_gaps(const T& x) {
   if constexpr (detail::hardware_binary<T>) {
     using layout = binary_layout<T>;  // the exponent field alone
     power = std::bit_cast<T>(std::bit_cast<typename layout::bits>(x) & (layout::exponent_field << layout::significand_bits));
+  } else if constexpr (detail::emulated_format<T>::available) {  // x87 long double, binary128: the binade from the bits
+    using format = detail::emulated_format<T>;
+    detail::unpacked_binary parts;
+    format::unpack(x, parts);
+    power = format::pack(false, parts.exponent + format::digits - 1, detail::uint128(1) << (format::digits - 1));
   } else {
     using std::frexp;
     using std::ldexp;

@@ -18,6 +18,8 @@
 #include <boost/math/special_functions/next.hpp>
 #include <boost/math/tools/precision.hpp>
 
+#include "emulated_fma.hpp"
+
 // Declared, not included: the core solver needs no quadmath header.
 namespace boost::multiprecision::backends {
 struct float128_backend;
@@ -85,13 +87,24 @@ struct has_fused_fma<boost::multiprecision::number<
     boost::multiprecision::backends::cpp_bin_float<Digits, Base, Allocator, Exponent, MinExponent, MaxExponent>, Templates>>
     : std::false_type {};
 
+// T's fma where it is fused and fast; for x87 long double and binary128 the
+// same single rounding in integer arithmetic (emulated_fma.hpp).
+template <class T>
+T fma_rounded_once(const T& a, const T& b, const T& c) {
+  if constexpr (emulated_format<T>::available) {
+    return emulated_fma(a, b, c);
+  } else {
+    using std::fma;
+    return fma(a, b, c);
+  }
+}
+
 // a * b == product + error exactly, barring overflow and underflow of the error.
 template <class T>
 exact_pair<T> two_prod(const T& a, const T& b) {
-  using std::fma;
   const T product = a * b;
   if constexpr (has_fused_fma<T>::value) {
-    return {product, fma(a, b, -product)};
+    return {product, fma_rounded_once(a, b, T(-product))};
   } else {  // Veltkamp's split and Dekker's product, exact for any radix-2 T
     using std::ldexp;
     const T splitter = ldexp(T(1), (precision_of<T>() + 1) / 2) + 1;
@@ -134,8 +147,7 @@ T sum_of_head_and_tail(const T& head, const T& tail) {
 template <class T>
 T fused_multiply_add(const T& a, const T& b, const T& c) {
   if constexpr (has_fused_fma<T>::value) {
-    using std::fma;
-    return fma(a, b, c);
+    return fma_rounded_once(a, b, c);
   } else {
     const auto product = two_prod(a, b);
     const auto sum = two_sum(product.high, c);
@@ -223,6 +235,7 @@ template <class T>
 T next_up(const T& x) {
   if (x >= (std::numeric_limits<T>::max)()) return std::numeric_limits<T>::infinity();
   if constexpr (hardware_binary<T>) return from_ordered_key<T>(ordered_key(x) + 1);
+  else if constexpr (emulated_format<T>::available) return neighbour_by_bits(x, true);
   else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_next(x);
   else return upper_neighbour_by_frexp(x);
 }
@@ -231,6 +244,7 @@ template <class T>
 T next_down(const T& x) {
   if (x <= -(std::numeric_limits<T>::max)()) return -std::numeric_limits<T>::infinity();
   if constexpr (hardware_binary<T>) return from_ordered_key<T>(ordered_key(x) - 1);
+  else if constexpr (emulated_format<T>::available) return neighbour_by_bits(x, false);
   else if constexpr (std::is_convertible_v<float, T>) return boost::math::float_prior(x);
   else return -upper_neighbour_by_frexp(T(-x));
 }
@@ -245,26 +259,29 @@ struct has_correct_sqrt<boost::multiprecision::number<boost::multiprecision::bac
     : std::false_type {};
 
 // sqrt(x) rounded to nearest. Where T's own sqrt is only faithful (within an
-// ulp), its result r is moved to a neighbour when x lies beyond the square of
-// the midpoint between them: the sign of x - (r -+ h)^2 = x - r^2 -+ 2 r h - h^2
-// (2h the gap to the neighbour) is the sign of an exact sum (r^2 by two_prod;
-// r h and h^2 are exact, h being a power of two). A root is never a midpoint,
-// so there are no ties.
+// ulp), its result r is moved to a neighbour when the root lies beyond the
+// midpoint between them. With r+ = next_up(r) and U the ulp of r, the upper
+// midpoint m = (r + r+) / 2 has m^2 = r r+ + U^2 / 4, and x - r r+ is a
+// multiple of U^2 (r and r+ are multiples of U, and x, near r^2, of its own
+// ulp, a larger power of two), so sqrt(x) > m exactly when x - r r+ > 0: the
+// sign of one fma, which rounding keeps. Likewise below, with r- = next_down(r)
+// and U' the ulp of r- (U, or U / 2 when r is a power of two): the lower
+// midpoint's square is r r- + U'^2 / 4 and x - r r- a multiple of U U', so
+// sqrt(x) < that midpoint exactly when x - r r- <= 0. A root is never a
+// midpoint, so there are no ties.
 template <class T>
 T square_root(const T& x) {
   using std::sqrt;
   T root = sqrt(x);
   if constexpr (!has_correct_sqrt<T>::value) {
+    static_assert(has_fused_fma<T>::value, "the midpoint tests need an fma rounded once");
     using std::isfinite;
     if (!(x > 0) || !isfinite(x)) return root;
     // a faithful root is at most one neighbour away from the nearest
-    const auto square = two_prod(root, root);
-    const T above = next_up(root), below = next_down(root);
-    const T half_up = (above - root) / 2, half_down = (root - below) / 2;
-    const T beyond_upper_midpoint[5] = {x, -square.high, -square.low, T(-2 * root * half_up), T(-half_up * half_up)};
-    const T below_lower_midpoint[5] = {x, -square.high, -square.low, T(2 * root * half_down), T(-half_down * half_down)};
-    if (sign_of_exact_sum(beyond_upper_midpoint) > 0) return above;
-    if (sign_of_exact_sum(below_lower_midpoint) < 0) return below;
+    const T above = next_up(root);
+    if (fma_rounded_once(T(-root), above, x) > 0) return above;
+    const T below = next_down(root);
+    if (!(fma_rounded_once(T(-root), below, x) > 0)) return below;
   }
   return root;
 }

@@ -45,6 +45,23 @@ struct safe_window {
     else return window_half_width<T>(precision_of<T>());
   }
   static bool holds(const T& x) {
+    if constexpr (emulated_format<T>::available) {
+      // x87 long double and binary128 on their bits, as float and double
+      // (magnitude_inside_plain_window): zero is inside; subnormals,
+      // infinities and NaN are not (& and |, not && and ||: no branch that
+      // only inputs beyond 2^E would take the other way)
+      using format = emulated_format<T>;
+      unpacked_binary parts;
+      if (!format::unpack(x, parts)) return x == 0;
+      const long E = half_width(), binade = parts.exponent + format::digits - 1;
+      return (-E <= binade) & ((binade < E) | ((binade == E) & (parts.significand == uint128(1) << (format::digits - 1))));
+    } else if constexpr (requires { x.backend().data()->_mpfr_exp; }) {
+      // MPFR: |x| in [2^(e-1), 2^e) for a regular x, e its exponent field;
+      // zero, infinities, NaN (special values of the field) and |x| in
+      // [2^E, 2^(E+1)) take the general test below
+      const long e = x.backend().data()->_mpfr_exp, E = half_width();
+      if ((e > std::numeric_limits<long>::min() + 3) & (e != E + 1)) return (-E < e) & (e <= E);
+    }
     using std::fabs;
     const T magnitude = fabs(x);
     if (magnitude == 0) return true;
