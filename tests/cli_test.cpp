@@ -221,6 +221,20 @@ TEST(ContactSolve, RejectsMalformedNumbersInWiderTypes) {
   EXPECT_EQ(r.status, 1);
 }
 
+// The wider types read hex digit by digit (exactly), in either case, with or
+// without a point, a sign or a power; a malformed one is an error, as decimals are.
+TEST(ContactSolve, ReadsHexExactlyAndExplainsEachMalformedOneInWiderTypes) {
+  const auto hex = run_cli("--type cpp_bin_float_50", "-0x1.8p+1 0x1p-2 0X1P0\n+0xA.bp0 0xa.Bp0 0x1p0\n0x2 0x1 0x1\n");
+  const auto decimal = run_cli("--type cpp_bin_float_50", "-3 0.25 1\n10.6875 10.6875 1\n2 1 1\n");
+  EXPECT_EQ(hex.out, decimal.out);
+  EXPECT_EQ(hex.status, 0);
+  const auto bad = run_cli("--type cpp_bin_float_50", "0x 1 1\n0x1..2 1 1\n0x1q3 1 1\n0x1p 1 1\n0x1pz 1 1\n0x1p3z 1 1\n");
+  const auto out = lines_of(bad.out);
+  ASSERT_EQ(out.size(), 6u);
+  for (const auto& line : out) EXPECT_EQ(line.substr(0, 7), "error '") << line;
+  EXPECT_EQ(bad.status, 1);
+}
+
 TEST(ContactSolve, ReadsStandardInputWithoutAFile) {
   const std::string in = ::testing::TempDir() + "stdin_test.in", out = ::testing::TempDir() + "stdin_test.out";
   std::ofstream(in) << "3 1 3\n";

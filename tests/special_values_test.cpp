@@ -168,6 +168,10 @@ TEST(Cases, ReleaseAdmitsDyOnItsSideOnlyWhereDyIsTheLargest) {
   EXPECT_TRUE(lies_on_its_side(contact_case::release, largest, largest));
   EXPECT_TRUE(lies_on_its_side(contact_case::release, inf, largest));
   EXPECT_FALSE(lies_on_its_side(contact_case::release, 1.0, 1.0));
+  EXPECT_FALSE(lies_on_its_side(contact_case::release, 0.5, 1.0));
+  EXPECT_TRUE(only_infinity_on_its_side(contact_case::release, largest));
+  EXPECT_FALSE(only_infinity_on_its_side(contact_case::contact, largest));
+  EXPECT_FALSE(only_infinity_on_its_side(contact_case::release, 1.0));
   EXPECT_FALSE(lies_on_its_side(contact_case::release, std::nextafter(largest, 0.0), std::nextafter(largest, 0.0)));
   EXPECT_FALSE(lies_on_its_side(contact_case::impact, -largest, -largest));
 }

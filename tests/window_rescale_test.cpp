@@ -10,9 +10,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "contact/harness/families.hpp"
 #include "contact/solve.hpp"
+#include "contact/types.hpp"
 
 namespace {
 
@@ -187,6 +189,32 @@ void expect_band_bounds_monotone() {
   for (const auto& band : bands::table) EXPECT_LE(band.lowest, band.top - 1);
   EXPECT_EQ(bands::last_of(bands::count - 1), bands::overflow_binade - 4);
   EXPECT_EQ(contact::detail::binade_of(bands::end), bands::overflow_binade - 3);
+}
+
+// safe_window<T>::holds reads the bits of long double, float128 and MPFR
+// numbers: it gives what its definition gives (x = 0, or |x| in [2^-E, 2^E]) at
+// and beside both edges, and for infinity, NaN and the least subnormal.
+template <class T>
+void expect_safe_window_as_defined() {
+  using std::fabs;
+  using std::ldexp;
+  const int E = static_cast<int>(contact::detail::safe_window<T>::half_width());
+  const T top = ldexp(T(1), E), bottom = ldexp(T(1), -E), eps = std::numeric_limits<T>::epsilon();
+  std::vector<T> xs = {T(0), T(1), top, T(top * (1 - eps / 2)), T(top * (1 + eps)), bottom, T(bottom * (1 - eps / 2)),
+                       T(bottom * (1 + eps)), T(2 * top), T(bottom / 2), std::numeric_limits<T>::infinity(),
+                       std::numeric_limits<T>::quiet_NaN()};
+  if constexpr (std::numeric_limits<T>::is_bounded) xs.push_back(std::numeric_limits<T>::denorm_min());
+  for (const T& magnitude : xs)
+    for (const T& x : {magnitude, T(-magnitude)}) {
+      const bool defined = x == 0 || (bottom <= fabs(x) && fabs(x) <= top);
+      EXPECT_EQ(contact::detail::safe_window<T>::holds(x), defined) << x;
+    }
+}
+
+TEST(WindowRescale, SafeWindowOnBitsHoldsAsDefined) {
+  expect_safe_window_as_defined<long double>();
+  expect_safe_window_as_defined<contact::float128>();
+  expect_safe_window_as_defined<contact::mpfr_float>();
 }
 
 TEST(PhiBands, EachBandsBoundsHoldForEveryPhiInIt) {

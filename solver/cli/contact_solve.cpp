@@ -74,7 +74,7 @@ std::optional<T> parse_number(const std::string& token, std::string& reason) {
     return value;
   } else {
     if (auto hex = parse_hex<T>(token)) return hex;
-    const bool looks_numeric = !token.empty() && token.find_first_not_of("0123456789+-.eE") == std::string::npos;
+    const bool looks_numeric = token.find_first_not_of("0123456789+-.eE") == std::string::npos;  // (tokens are never empty)
     if (!looks_numeric) { reason = "'" + token + "' is not a number"; return std::nullopt; }
     try { return T(token); } catch (const std::exception&) { reason = "'" + token + "' is not a number"; return std::nullopt; }
   }

@@ -38,7 +38,7 @@ read_result<T> read_rounded(const std::string& text) {
   mpfr_clear_flags();
   char* end = nullptr;
   int inexact = mpfr_strtofr(x, text.c_str(), &end, 0, MPFR_RNDN);  // base 0: decimal, or hex after 0x
-  const bool whole = !text.empty() && end == text.c_str() + text.size();
+  const bool whole = end != text.c_str() && *end == '\0';  // something read, and nothing left after it
   inexact = mpfr_check_range(x, inexact, MPFR_RNDN);
   mpfr_subnormalize(x, inexact, MPFR_RNDN);  // a subnormal at its own precision, from the ternary value: still one rounding
   const bool overflowed = mpfr_overflow_p() != 0;

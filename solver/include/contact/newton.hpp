@@ -2,6 +2,7 @@
 // that the closed form replaces, kept as the baseline for accuracy and speed.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -113,7 +114,7 @@ newton_result<T> newton_iterate(const T& u, const T& dy, const T& phi, int max_i
   // side: only the strict sides of (A.30) and (A.32) can need a step off dy
   // (none above the largest finite dy, whose root is then finite: see above).
   if (which == contact_case::impact && !(s < dy)) s = detail::next_down(dy);
-  if (which == contact_case::release && !(s > dy) && dy < largest) s = detail::next_up(dy);
+  if (which == contact_case::release && !(s > dy)) s = (std::min)(detail::next_up(dy), largest);  // dy = largest: dy itself
   return {{s, which}, iterations};
 }
 
