@@ -1169,10 +1169,9 @@ TEST_F(tool, two_scenes_that_set_batch_reference_are_an_error_with_file_and_line
   EXPECT_FALSE(fs::exists(work / "twice-out" / "report.md"));
 }
 
-TEST_F(tool, a_candidate_is_measured_beside_the_algorithms_in_double) {
-  std::ofstream(work / "candidate.toml") << R"([scene]
-name = "with_candidate"
-[[family]]
+// A small scene of stable in double, timed, beside which a candidate is measured.
+std::string candidate_scene(const std::string& name) {
+  return "[scene]\nname = \"" + name + "\"\n" + R"([[family]]
 name = "box"
 generator = "box"
 samples = 50
@@ -1186,6 +1185,10 @@ checks = ["accuracy", "timing"]
 repetitions = 1
 min_time = 0.01
 )";
+}
+
+TEST_F(tool, a_candidate_is_measured_beside_the_algorithms_in_double) {
+  std::ofstream(work / "candidate.toml") << candidate_scene("with_candidate");
   // free flight for every input, s = -u: right in the free case only
   const std::string minus_u =
       "minus_u=cmd:python3 -c \"import sys; [print(repr(-float.fromhex(l.split()[0])), 1) for l in sys.stdin]\"";
@@ -1205,22 +1208,7 @@ min_time = 0.01
 }
 
 TEST_F(tool, a_library_candidate_is_timed_in_process_and_mapped_beside_stable) {
-  std::ofstream(work / "library.toml") << R"([scene]
-name = "with_library"
-[[family]]
-name = "box"
-generator = "box"
-samples = 50
-u = [1e-6, 1e-3]
-dy = { log10 = [-6, -3], sign = "both" }
-phi = [1e-2, 1e4]
-[[run]]
-types = ["double"]
-algorithms = ["stable"]
-checks = ["accuracy", "timing"]
-repetitions = 1
-min_time = 0.01
-)";
+  std::ofstream(work / "library.toml") << candidate_scene("with_library");
   const auto r = run_tool("--scene '" + (work / "library.toml").string() + "' --out '" + (work / "library-out").string() +
                               "' --candidate 'mine=lib:" CONTACT_STABLE_CANDIDATE "'",
                           "library");
