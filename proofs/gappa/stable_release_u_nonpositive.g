@@ -24,9 +24,12 @@
 #
 # The hints follow each rounding to s through the root, weighting the discriminant's
 # error by 1 / (2 Root) and phi dy^2's by its share, with Root and u split so that
-# each intermediate's range, hence its half-ulp, is that of its binade. The splits at
-# 4 (root - u, and phi dy), and of the discriminant at 16, keep a computed value just above a power of two, when the
-# exact one lies just below, from being charged the upper binade's half-ulp.
+# each intermediate's range, hence its half-ulp, is that of its binade: u in 32 pieces
+# (a second split variable, Root, makes Gappa stop at its iteration limit, and its
+# result then depends on memory layout; gappa_bounds fails on that). The splits at 4
+# (root - u, and phi dy), and of the discriminant at 16, keep a computed value just
+# above a power of two, when the exact one lies just below, from being charged the
+# upper binade's half-ulp.
 #@ -Eprecision=200
 #@ -Echange-threshold=0
 @rnd = float<53, ne>;
@@ -60,4 +63,4 @@ root - u -> 2 * S + (root - Root);
 u * u + 4 * st -> Disc + 4 * (st - St);
 p * dy -> St + (p - phi * dy) * dy;
 Disc -> Root * Root + (Disc - Root * Root);
-$ Root in 64, u in 8, root - u in (4), u * u + 4 * st in (16), p * dy in (4);
+$ u in 32, root - u in (4), u * u + 4 * st in (16), p * dy in (4);
