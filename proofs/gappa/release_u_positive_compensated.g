@@ -3,14 +3,16 @@
 # line for it and proofs.gappa (gappa_bounds) leaves it out; proofs.gappa.compensated
 # (gappa_bounds --candidate) proves it on its own, checks that Gappa refuses half the
 # bound, and that this line states what Gappa proves (rounded up):
-#! proven: 3.0156250000000089e+0 ulp
+#! proven: 3.0000000000000097e+0 ulp
 #   p = phi dy, p_low = fma(phi, dy, -p);  st = p dy, st_err = fma(p, dy, -st);
 #   st_low = fma(p_low, dy, st_err)                 (phi dy^2 = st + st_low, to 2^-104)
 #   root = sqrt(fma(u, u, 4 (st + st_low)));  (den, den_low) = two_sum(u, root);
 #   inverse = 1 / den;  q = 2 st inverse;  residual = fma(-q, den, 2 st);
 #   correction = fma(-q, den_low, residual + 2 st_low);  s = fma(correction, inverse, q)
-# Gappa: 3.0156 ulps (relative error 3.348e-16, about (3 + 2^-6) 2^-53), in the frame
-# phi dy^2 in [1, 4] (homogeneity in (u, dy) by powers of four). The root's error weighs fully when
+# Gappa: 3.0000000000000097 ulps (relative error 3.3307e-16, 3 2^-53 and a second-order
+# term), in the frame phi dy^2 in [1, 4] (homogeneity in (u, dy) by powers of four), with
+# 200-bit interval ends: at Gappa's default 60 bits the root's 2-unit error is rounded
+# outward to 2 + 2^-7 units, which gave 3.0156. The root's error weighs fully when
 # u << sqrt(phi) dy: a discriminant rounded twice (4 (st + st_low), then the fma) gives it
 # 2 units, the last rounding 1. A double-double discriminant would give 2.5, but its
 # low-order sums may cancel to 0, where Gappa cannot bound a relative rounding error, and
@@ -18,6 +20,7 @@
 # bounded): two regime files. Window: st_low's exact value is a multiple of
 # 2^(Pe + 2b - 156), below 2^-1074 unless Pe + 2b >= -918, 26 binades above the bands'
 # present lowest for P <= 0.
+#@ -Eprecision=200
 @rnd = float<53, ne>;
 u = rnd(u_);
 dy = rnd(dy_);
