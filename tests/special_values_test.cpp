@@ -292,5 +292,22 @@ TEST(StableWitnesses, CompensatedImpactIsWithinAnUlpWhereThePlainFormLostFourAnd
   EXPECT_LE(reference::ulp_error(r.s, exact), 1.0);
 }
 
+// The input on which the rationalised (A.32) root rounded as written, 2 phi dy^2
+// / (u + root), lost 4.09 ulps: u far above 2 sqrt(phi) dy, so u + root is
+// about 2 u and phi dy^2's two roundings reach s undamped, with u + root's and
+// the quotient's. The compensated form carries phi dy^2 and u + root as pairs
+// and corrects the quotient; what is left is the root's share and the last rounding.
+TEST(StableWitnesses, CompensatedReleaseIsWithinAnUlpAndAHalfWhereTheRationalisedFormLostFour) {
+  const double u = 0x1.01564fa9cc90ep+33, dy = 0x1.0055fb8a9aaacp+0, phi = 0x1.00a36a661eb6dp+47;
+  const auto exact = reference::solve(u, dy, phi);
+  ASSERT_TRUE(exact.is_certified);
+  const double stiffness = (phi * dy) * dy;
+  const double rationalised = 2 * stiffness / (u + std::sqrt(std::fma(u, u, 4 * stiffness)));
+  EXPECT_GT(reference::ulp_error(rationalised, exact), 4.0);
+  const auto r = solve_stable(u, dy, phi);
+  EXPECT_EQ(r.which, contact_case::release);
+  EXPECT_LE(reference::ulp_error(r.s, exact), 1.5);
+}
+
 }  // namespace
 }  // namespace contact::testing

@@ -7,6 +7,7 @@
 // -, parentheses, numbers (`4`, `1b-3`), `fma(a, b, c)`, `sqrt(x)` and
 // `name(x)` for a declared rounding; the proposition `{ ... }` and the hints
 // after it are skipped. Anything else is an error, never silently ignored.
+// A free variable whose name ends in `_underflow` evaluates to 0 (evaluator).
 //
 // Evaluation in double follows the model's roundings, not the code's: a node
 // under a rounding operator is one IEEE operation on operands whose real value
@@ -235,6 +236,11 @@ class evaluator {
     return n;
   }
 
+  static bool is_underflow_term(const std::string& name) {
+    const std::string suffix = "_underflow";
+    return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  }
+
   [[noreturn]] static void not_exact(const char* what) {
     throw model_error(std::string("an unrounded ") + what + " of the model is not exact in double");
   }
@@ -255,6 +261,12 @@ class evaluator {
       case k::variable: {
         if (auto in = inputs_.find(n->name); in != inputs_.end()) return in->second;
         auto def = model_.definitions.find(n->name);
+        // A model writes a rounding that may land on double's subnormal grid as
+        // rnd(x) + NAME_underflow: the underflow term, bounded by a hypothesis, is how
+        // far that grid's rounding lies from the unbounded exponent's, and it is 0
+        // wherever the rounded value is normal (or exact). Here every rounded value
+        // is normal, or evaluation fails (checked), so the term is 0.
+        if (def == model_.definitions.end() && is_underflow_term(n->name)) return 0;
         if (def == model_.definitions.end()) throw model_error("`" + n->name + "` is neither an input nor defined");
         if (!visiting_.insert(n->name).second) throw model_error("`" + n->name + "` is defined in terms of itself");
         const double v = exact(def->second);

@@ -501,26 +501,27 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
 }
 
 // (A.30) and (A.32): the impacts (dy <= 0) and the releases of `lanes`, each
-// with its square root and one division: the impact's inverse of its
-// denominator, or the release's quotient. With `phi_is_subnormal` the
-// products with phi are formed from normal factors, as solve_stable forms
-// them (stable_form::impact_quotient).
+// with its square root and one division, the reciprocal of the impact's or of
+// the release's denominator. With `phi_is_subnormal` the products with phi are
+// formed from normal factors, as solve_stable forms them
+// (stable_form::impact_quotient).
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lanes<D> answer_roots(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   using L = lanes<D>;
   const auto impact_side = dy <= L(0);
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, fabs(dy));  // of phi |dy|
-  const L sum = u + dy;                                      // impact: u - gap
-  const L phi_dy = factors.phi * factors.x;                  // impact: push = phi gap; release: phi dy
-  const L term = phi_dy * select(impact_side, sum, dy);      // impact: push (u - gap); release: phi dy^2
+  const L phi_dy = factors.phi * factors.x;                      // impact: push = phi gap; release: phi dy
+  const L phi_dy_error = fused_multiply_add(factors.phi, factors.x, -phi_dy);
+  const auto stiffness = stable_form::stiffness_of(phi_dy, phi_dy_error, dy);  // release: phi dy^2
+  const L term = select(impact_side, L(phi_dy * (u + dy)), stable_form::release_term(u, stiffness));  // impact: push (u - gap)
   const L root = square_root(stable_form::discriminant(u, term));
   const auto one_plus_phi = detail::two_sum(L(1), phi);
-  const auto release = stable_form::release_fraction(u, term, root);
-  const L quotient = select(impact_side, L(1), release.numerator) /
-                     select(impact_side, stable_form::impact_denominator(one_plus_phi), release.denominator);
-  const L push_error = fused_multiply_add(factors.phi, factors.x, -phi_dy);
-  const L impact = stable_form::impact_quotient<phi_is_subnormal>(u, phi_dy, push_error, root, one_plus_phi, quotient, factors);
-  return select(impact_side, detail::impact_clamped(impact, u, dy), detail::clamped_above_positive(quotient, dy));
+  const auto u_plus_root = detail::two_sum(u, root);
+  const L inverse = L(1) / select(impact_side, stable_form::impact_denominator(one_plus_phi),
+                                  stable_form::release_denominator(u, u_plus_root));
+  const L impact = stable_form::impact_quotient<phi_is_subnormal>(u, phi_dy, phi_dy_error, root, one_plus_phi, inverse, factors);
+  const L release = stable_form::release_quotient(u, stiffness, root, u_plus_root, inverse);
+  return select(impact_side, detail::impact_clamped(impact, u, dy), detail::clamped_above_positive(release, dy));
 }
 
 // (A.31): the contacts, one division each.

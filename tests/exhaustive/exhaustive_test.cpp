@@ -142,18 +142,17 @@ std::vector<T> values_in(binades range, bool both_signs) {
 // where a rounding adds 1 to m, a product or quotient adds its operands' m, a
 // sum of terms of one sign takes the larger m and a square root halves it;
 // the release proofs weight the terms of a sum by their shares instead. The
-// branches' m are 3 (contact), 4.77 and 2.52 (release, u > 0 and u <= 0, the
-// latter proven in ulps of s* directly), the first-order terms of the proven
-// bounds. So s is within relative error
-// (1 - u)^-m - 1 <= m u / (1 - m u) of s* (Bernoulli; to first order only for
-// the weighted sums), that is within m / (1 - m u) ulps of s* (ulp(s*) >
-// |s*| u). For binary64 that is m plus a term of order 2^-53, which the
-// claimed k (3.01, 4.78, 2.53) covers; at p bits the term is of order 2^-p,
-// and k / (1 - k u) >= m / (1 - m u) covers it: 3.16, 5.17 and 2.64 ulps at
-// p = 6. Compensated impact has m = 2.5 (the root's share and the last
-// rounding) and terms of order u^2 beside, which Gappa bounds for binary64
-// only; its 2.62 ulps at p = 6 are held by this check, not derived (it finds
-// 1.28). An ulp is relative to the
+// branches' m are 3 (contact) and 2.52 (release, u <= 0, proven in ulps of s*
+// directly), the first-order terms of the proven bounds. So s is within
+// relative error (1 - u)^-m - 1 <= m u / (1 - m u) of s* (Bernoulli; to first
+// order only for the weighted sums), that is within m / (1 - m u) ulps of s*
+// (ulp(s*) > |s*| u). For binary64 that is m plus a term of order 2^-53, which
+// the claimed k (3.01, 2.53) covers; at p bits the term is of order 2^-p, and
+// k / (1 - k u) >= m / (1 - m u) covers it: 3.16 and 2.64 ulps at p = 6.
+// Compensated impact and release (u > 0) have m = 2.5 and 3 (the root's share
+// and the last rounding) and terms of order u^2 beside, which Gappa bounds for
+// binary64 only; their 2.62 and 3.16 ulps at p = 6 are held by this check, not
+// derived (it finds 1.28 and 2.40). An ulp is relative to the
 // format, so the bound is the same number of ulps but for that term. Free is
 // s = -u, exact. Without a fused fma, one ulp more, the allowance of the
 // property tests (unfused_fma_allowance, tests/harness.hpp): a branch's fma

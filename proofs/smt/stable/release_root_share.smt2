@@ -1,9 +1,9 @@
 ; Claim: in case (A.32) with u > 0 (the rationalised root), phi > 1, the root is positive
 ; and at least u, so X = u / root lies in (0, 1], and phi dy^2's share of the
 ; discriminant is W = 4 phi dy^2 / (u^2 + 4 phi dy^2) = 1 - X^2 (root^2 is the
-; discriminant). These are the hypotheses phi in [1, ...], X <= 1 and
-; W - (1 - X^2) in [0, 0] of proofs/gappa/stable_release_u_positive.g, which tie the
-; root's share of u + root (1 / (1 + X)) to phi dy^2's share of the discriminant.
+; discriminant). proofs/gappa/stable_release_u_positive.g takes phi in [1, ...] and
+; u / root in [0, 1] as hypotheses; its hints weight the root's error by the root's
+; share of u + root, 1 / (1 + X).
 ; expect: unsat
 ; show: u dy phi r
 (set-logic QF_NRA)

@@ -417,7 +417,7 @@ struct approximation {
 // One Newton step s0 + delta, delta = -Q(s0) / Q'(s0), on the case's polynomial Q
 // of leading coefficient a (the curvature bound). The bound is computed
 // alongside delta, not from it: it uses a cap on |delta| of 2^(5-p) |s0| (16 ulps;
-// the stable path is within 4.78), and a step beyond the cap is refused. With
+// the stable path is within 3.01), and a step beyond the cap is refused. With
 // rho = slope_error / |slope|:
 // - delta rounded: |delta~ - delta| (1 - rho) <= 2 eps |delta~| + eta + error / |slope| + rho |delta~|
 //   (1 / |slope| and the product each round once).
@@ -514,9 +514,7 @@ inline fixed_step impact_step(double u, double dy, double phi) {
 
 // (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*: always bounded.
 inline fixed_step release_step(double u, double dy, double phi) {
-  const double stiffness_term = (phi * dy) * dy;  // stable_form::release, sharing its square root
-  const double root = std::sqrt(std::fma(u, u, 4 * stiffness_term));
-  const double s0 = u > 0 ? 2 * stiffness_term / (u + root) : (root - u) / 2;
+  const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
   const double inverse = 1 / root;
   const auto a = times_own_sum(s0, u).product;
   const auto b = product(phi, dy);
@@ -537,7 +535,7 @@ inline bool rounds_alike(double s0, double delta, double factor, double& rounded
 }
 
 // float: the stable path's formulas run in double. Their proven bounds
-// (proofs/claimed_bounds.txt: at most 4.78 ulps of double at the root, every
+// (proofs/claimed_bounds.txt: at most 3.01 ulps of double at the root, every
 // branch, before the clamps) put the root within 2^-49 |s| of the double result:
 // float inputs lie deep inside double's plain window, so every intermediate and
 // the root are normal doubles. The float midpoints are exact doubles.

@@ -137,30 +137,107 @@ Num contact(const Num& u, const Num& dy, const Num& phi) {
 }
 
 // (A.32), from (A.23) corrected: s^2 + u s - phi dy^2 = 0, positive root
-// s = (-u + sqrt(u^2 + 4 phi dy^2)) / 2. For u > 0 the sum cancels, so the root
-// is rationalised: s = 2 phi dy^2 / (u + sqrt(u^2 + 4 phi dy^2)).
-// stiffness_term = phi dy^2, root = sqrt(discriminant(u, stiffness_term)).
+// s = (-u + sqrt(u^2 + 4 phi dy^2)) / 2. For u <= 0 nothing cancels: s =
+// (root - u) / 2, 2.52 ulps proven (proofs/gappa/stable_release_u_nonpositive.g).
+// For u > 0 the sum cancels, so the root is rationalised, s = 2 phi dy^2 /
+// (u + root), and compensated: rounded as written, phi dy^2's two roundings,
+// u + root's and the quotient's would cost up to 4.78 ulps. Here phi dy^2 is
+// the pair st + st_low, u + root an exact pair (two_sum), and the quotient by
+// its high part is corrected by the residual; what is left is the root's
+// error (the discriminant rounded twice) and the last rounding: 3.0 ulps
+// proven (proofs/gappa/stable_release_u_positive.g). Both divide once, by
+// release_denominator, so that the batch kernel shares the division with the
+// impact's.
+
+// phi dy^2 = high + low to about 2^-104 of it: high = (phi dy) dy as rounded
+// twice, low from phi dy's rounding error (phi_dy_error, two_prod's low part)
+// and the product's.
 template <class Num>
-[[gnu::always_inline]] inline fraction<Num> release_fraction(const Num& u, const Num& stiffness_term, const Num& root) {
-  if constexpr (detail::binary_bits<Num>) {
-    // operands selected, not a branch: the sign of u is a coin toss on
-    // physical inputs, and a select costs less than a mispredicted branch
-    const auto rationalised = u > Num(0);
-    using detail::select;
-    return {select(rationalised, Num(Num(2) * stiffness_term), Num(root - u)), select(rationalised, Num(u + root), Num(2))};
-  } else {
-    if (u > Num(0)) return {Num(2) * stiffness_term, u + root};
-    return {root - u, Num(2)};
+struct stiffness_pair {
+  Num high, low;
+};
+
+template <class Num>
+[[gnu::always_inline]] inline stiffness_pair<Num> stiffness_of(const Num& phi_dy, const Num& phi_dy_error, const Num& dy) {
+  using detail::fused_multiply_add;
+  const Num high = phi_dy * dy;
+  return {high, fused_multiply_add(phi_dy_error, dy, fused_multiply_add(phi_dy, dy, -high))};
+}
+
+// The release's parts are selected by the sign of u, not branched on: it is a
+// coin toss on physical inputs. (The wide types branch, in release_with_square_root.)
+
+// The discriminant's term: the pair's sum for u > 0, where the compensation
+// needs it; the high part for u <= 0, as proven.
+template <class Num>
+[[gnu::always_inline]] inline Num release_term(const Num& u, const stiffness_pair<Num>& stiffness) {
+  using detail::select;
+  return select(u > Num(0), Num(stiffness.high + stiffness.low), stiffness.high);
+}
+
+// The division's operand: u + root (u_plus_root's high part) for u > 0, 2 for u <= 0.
+template <class Num>
+[[gnu::always_inline]] inline Num release_denominator(const Num& u, const detail::exact_pair<Num>& u_plus_root) {
+  using detail::select;
+  return select(u > Num(0), u_plus_root.high, Num(2));
+}
+
+// u > 0: 2 st / (u + root) from q = 2 st inverse, corrected by the residual
+// 2 (st + st_low) - q (u + root) (two fmas: q (u + root)'s high part exactly).
+template <class Num>
+[[gnu::always_inline]] inline Num rationalised_quotient(const stiffness_pair<Num>& stiffness,
+                                                        const detail::exact_pair<Num>& u_plus_root, const Num& inverse) {
+  using detail::fused_multiply_add;
+  const Num twice = Num(2) * stiffness.high;
+  const Num quotient = twice * inverse;
+  const Num residual = fused_multiply_add(-quotient, u_plus_root.high, twice);
+  const Num correction = fused_multiply_add(-quotient, u_plus_root.low, Num(residual + Num(2) * stiffness.low));
+  return fused_multiply_add(correction, inverse, quotient);
+}
+
+// u <= 0: (root - u) / 2, as (root - u) half with half = 1/2, the same value.
+template <class Num>
+[[gnu::always_inline]] inline Num plain_release(const Num& u, const Num& root, const Num& half) {
+  return (root - u) * half;
+}
+
+// s from its parts, with inverse = 1 / release_denominator(u, u_plus_root).
+template <class Num>
+[[gnu::always_inline]] inline Num release_quotient(const Num& u, const stiffness_pair<Num>& stiffness, const Num& root,
+                                                   const detail::exact_pair<Num>& u_plus_root, const Num& inverse) {
+  using detail::select;
+  return select(u > Num(0), rationalised_quotient(stiffness, u_plus_root, inverse), plain_release(u, root, inverse));
+}
+
+template <class Num>
+struct release_root {
+  Num s, square_root;  // (A.32)'s root, and the square root of its discriminant
+};
+
+template <bool phi_is_subnormal = false, class Num>
+[[gnu::always_inline]] inline release_root<Num> release_with_square_root(const Num& u, const Num& dy, const Num& phi) {
+  using detail::fused_multiply_add;
+  using detail::square_root;
+  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors
+  const Num phi_dy = factors.phi * factors.x;
+  if constexpr (!detail::binary_bits<Num>) {
+    // The wide types (and scaled<T>) branch: their fma is a library call or an
+    // emulation, of which u <= 0 needs none of the compensation's.
+    if (!(u > Num(0))) {
+      const Num root = square_root(discriminant(u, Num(phi_dy * dy)));
+      return {plain_release(u, root, Num(Num(1) / Num(2))), root};
+    }
   }
+  const auto stiffness = stiffness_of(phi_dy, fused_multiply_add(factors.phi, factors.x, -phi_dy), dy);
+  const Num root = square_root(discriminant(u, release_term(u, stiffness)));
+  const auto u_plus_root = detail::two_sum(u, root);
+  const Num inverse = Num(1) / release_denominator(u, u_plus_root);
+  return {release_quotient(u, stiffness, root, u_plus_root, inverse), root};
 }
 
 template <bool phi_is_subnormal = false, class Num>
-Num release(const Num& u, const Num& dy, const Num& phi) {
-  using detail::square_root;
-  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
-  const Num stiffness_term = (factors.phi * factors.x) * dy;  // phi dy^2
-  const auto [numerator, denominator] = release_fraction(u, stiffness_term, square_root(discriminant(u, stiffness_term)));
-  return numerator / denominator;
+[[gnu::always_inline]] inline Num release(const Num& u, const Num& dy, const Num& phi) {
+  return release_with_square_root<phi_is_subnormal>(u, dy, phi).s;
 }
 
 }  // namespace stable_form

@@ -118,7 +118,7 @@ int binade_of(const T& x) {
 // intermediate of the stable formulas, of the fma pre-test and of two_prod
 // over- or underflows (docs/equations.md, section 6, lists each bound;
 // proofs/gappa/window/ proves them per band). A band leaves u and dy 406 to
-// 956 binades of spread in double, 16 to 116 in float (the plain window: 480
+// 904 binades of spread in double, 16 to 93 in float (the plain window: 480
 // and 48 with phi inside it); an impact, 458 to 1428 and 39 to 166. The last
 // band ends early, at `end`, 2^1021 (double) or 2^125 (float): from there up
 // 2 (1 + phi) could overflow, and phi is in no band.
@@ -162,6 +162,10 @@ struct phi_bands {
     const int Pe = std::max(P, emin);
     const int lowest = std::max({ceil_half(emin - P),    // phi dy^2
                                  emin - Pe + 2 * p - 2,  // two_prod's low part, the fmas' exact values
+                                 // phi dy^2's low part (stable_form::stiffness_of), a multiple of
+                                 // 2^(Pe + 2b - 3p + 3), and phi dy^2 >= 2^(emin + 2p - 2), so that
+                                 // the compensated release's corrections stay far above the subnormals
+                                 ceil_half(emin - Pe + 2 * p - 2),
                                  ceil_half(emin),        // u^2, the discriminants
                                  emin - P,               // phi dy
                                  emin + p - 1});         // u + dy, a multiple of 2^emin
