@@ -246,6 +246,24 @@ TEST(EmulatedFma, LongDoubleInIntegersMatchesMpfrOnRandomOperands) {
   EXPECT_EQ(wrong, 0);
 }
 
+// Where x87's fma is emulated, a product's exact error comes from Dekker's
+// product instead (detail::product_error): the same value as MPFR's fma(a, b,
+// -ab), on products of every binade the plain window holds and on short
+// significands, whose error is zero.
+TEST(EmulatedFma, LongDoubleProductErrorByDekkerMatchesMpfr) {
+  if (!detail::emulated_format<long double>::available) GTEST_SKIP() << "long double is not x87's";
+  static_assert(detail::product_error_by_dekker<long double>);
+  draws<long double> d(5);
+  long wrong = 0;
+  for (long i = 0; i < 1000000; ++i) {
+    const int width = i % 10 == 0 ? format<long double>::digits / 2 : format<long double>::digits;
+    const long double a = d.normal(d.in(-4000, 4000), width), b = d.normal(d.in(-4000, 4000), width), product = a * b;
+    wrong += format<long double>::bits(detail::product_error(a, b, product)) !=
+             format<long double>::bits(mpfr_fma_in(a, b, (long double)(-product)));
+  }
+  EXPECT_EQ(wrong, 0);
+}
+
 TEST(EmulatedFma, Float128MatchesMpfrOnRandomOperands) {
   draws<float128> d(3);
   EXPECT_EQ(mismatches<float128>(1000000, [&](long) { return d.random_operands(); }), 0);

@@ -106,7 +106,7 @@ template <bool phi_is_subnormal = false, class Num>
   using detail::two_sum;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
   const Num push = factors.phi * factors.x;  // phi |dy|
-  const Num push_error = fused_multiply_add(factors.phi, factors.x, -push);
+  const Num push_error = detail::product_error(factors.phi, factors.x, push);
   const Num root = square_root(discriminant(u, Num(push * (u - gap))));
   const auto one_plus_phi = two_sum(Num(1), phi);
   const Num inverse = Num(1) / impact_denominator(one_plus_phi);
@@ -161,7 +161,7 @@ template <class Num>
 [[gnu::always_inline]] inline stiffness_pair<Num> stiffness_of(const Num& phi_dy, const Num& phi_dy_error, const Num& dy) {
   using detail::fused_multiply_add;
   const Num high = phi_dy * dy;
-  return {high, fused_multiply_add(phi_dy_error, dy, fused_multiply_add(phi_dy, dy, -high))};
+  return {high, fused_multiply_add(phi_dy_error, dy, detail::product_error(phi_dy, dy, high))};
 }
 
 // The release's parts are selected by the sign of u, not branched on: it is a
@@ -228,7 +228,7 @@ template <bool phi_is_subnormal = false, class Num>
       return {plain_release(u, root, Num(Num(1) / Num(2))), root};
     }
   }
-  const auto stiffness = stiffness_of(phi_dy, fused_multiply_add(factors.phi, factors.x, -phi_dy), dy);
+  const auto stiffness = stiffness_of(phi_dy, detail::product_error(factors.phi, factors.x, phi_dy), dy);
   const Num root = square_root(discriminant(u, release_term(u, stiffness)));
   const auto u_plus_root = detail::two_sum(u, root);
   const Num inverse = Num(1) / release_denominator(u, u_plus_root);

@@ -99,15 +99,32 @@ T fma_rounded_once(const T& a, const T& b, const T& c) {
   }
 }
 
-// a * b == product + error exactly, barring overflow and underflow of the error.
+// Whether T's fma is emulated in integers (x87 long double), where Dekker's
+// product gives a product's exact error for about a quarter of the cost.
 template <class T>
-exact_pair<T> two_prod(const T& a, const T& b) {
-  const T product = a * b;
-  if constexpr (has_fused_fma<T>::value) {
-    return {product, fma_rounded_once(a, b, T(-product))};
-  } else {  // Veltkamp's split and Dekker's product, exact for any radix-2 T
-    using std::ldexp;
-    const T splitter = ldexp(T(1), (precision_of<T>() + 1) / 2) + 1;
+inline constexpr bool product_error_by_dekker = !has_fused_fma<T>::value ||
+                                                (std::is_same_v<T, long double> && emulated_format<T>::available);
+
+// a * b - product exactly, for product = a * b rounded, barring overflow (of
+// the split, within 2^-(p/2) of T's largest value, in Dekker's case) and
+// underflow of the error: T's own fused fma, or Veltkamp's split and Dekker's
+// product, exact for any radix-2 T.
+template <class T>
+T fused_multiply_add(const T& a, const T& b, const T& c);
+
+template <class T>
+T product_error(const T& a, const T& b, const T& product) {
+  if constexpr (!product_error_by_dekker<T>) {
+    return fused_multiply_add(a, b, T(-product));  // the lanes' and scaled<T>'s own too
+  } else {
+    const T splitter = [] {
+      if constexpr (std::is_floating_point_v<T>) {
+        return T((1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
+      } else {
+        using std::ldexp;
+        return T(ldexp(T(1), (precision_of<T>() + 1) / 2) + 1);
+      }
+    }();
     auto split = [&](const T& x) {
       const T scaled = splitter * x;
       const T high = scaled - (scaled - x);
@@ -115,9 +132,15 @@ exact_pair<T> two_prod(const T& a, const T& b) {
     };
     const auto [a_high, a_low] = split(a);
     const auto [b_high, b_low] = split(b);
-    const T error = ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
-    return {product, error};
+    return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
   }
+}
+
+// a * b == product + error exactly, barring overflow and underflow of the error.
+template <class T>
+exact_pair<T> two_prod(const T& a, const T& b) {
+  const T product = a * b;
+  return {product, product_error(a, b, product)};
 }
 
 // head + tail rounded to nearest, for |tail| below an ulp of head, where
