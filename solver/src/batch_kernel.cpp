@@ -511,7 +511,7 @@ HWY_INLINE lanes<D> answer_roots(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   const auto impact_side = dy <= L(0);
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, fabs(dy));  // of phi |dy|
   const L phi_dy = factors.phi * factors.x;                      // impact: push = phi gap; release: phi dy
-  const L phi_dy_error = fused_multiply_add(factors.phi, factors.x, -phi_dy);
+  const L phi_dy_error = detail::product_error(factors.phi, factors.x, phi_dy);
   const auto stiffness = stable_form::stiffness_of(phi_dy, phi_dy_error, dy);  // release: phi dy^2
   const L term = select(impact_side, L(phi_dy * (u + dy)), stable_form::release_term(u, stiffness));  // impact: push (u - gap)
   const L root = square_root(stable_form::discriminant(u, term));

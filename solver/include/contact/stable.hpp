@@ -216,7 +216,6 @@ struct release_root {
 
 template <bool phi_is_subnormal = false, class Num>
 [[gnu::always_inline]] inline release_root<Num> release_with_square_root(const Num& u, const Num& dy, const Num& phi) {
-  using detail::fused_multiply_add;
   using detail::square_root;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors
   const Num phi_dy = factors.phi * factors.x;
