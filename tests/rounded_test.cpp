@@ -354,20 +354,6 @@ TEST(RoundedExactDecision, WalksToATieFromEitherSide) {
   }
 }
 
-// The Newton step's guards, on made-up residuals: the step is refused (the
-// exact decision takes over) when the sign of Q'(s0) is uncertain, when it is
-// not the sign Q' has at the wanted root, and when the step exceeds 16 ulps.
-TEST(RoundedFastPath, NewtonStepRefusesWhatItCannotBound) {
-  using rounded_form::residual;
-  const double s0 = 1.0, tiny = 0x1p-60;
-  EXPECT_TRUE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 0x1p-52, 1.0, 1}).valid);
-  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 1.0, 1.0, 1}).valid);
-  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, 2.0, 0x1p-52, 1.0, -1}).valid);
-  EXPECT_FALSE(rounded_form::newton_step(s0, residual<double>{0x1p-20, 0x1p-110, 2.0, 0x1p-52, 1.0, 1}).valid);
-  EXPECT_TRUE(rounded_form::newton_step(s0, residual<double>{tiny, 0x1p-110, -2.0, 0x1p-52, 1.0, 0}).valid);
-  EXPECT_FALSE(rounded_form::rounds_as_root(rounded_form::approximation<double>{1.0, 0.0, 0.0, false}));
-}
-
 }  // namespace
 }  // namespace contact::testing
 
@@ -379,12 +365,17 @@ namespace {
 TEST(RoundedFastPath, FixedBoundsAreTheProvenOnes) {
   std::ifstream in(CONTACT_ROUNDED_BOUNDS);
   ASSERT_TRUE(in) << CONTACT_ROUNDED_BOUNDS;
-  const std::map<std::string, double> code = {
-      {"contact", rounded_form::fixed_bound_contact},
-      {"impact", rounded_form::fixed_bound_impact},
-      {"release", rounded_form::fixed_bound_release},
-      {"contact_cancellation_limit", rounded_form::contact_cancellation_limit},
-      {"impact_separation_limit", rounded_form::impact_separation_limit}};
+  std::map<std::string, double> code;
+  auto add = [&code](const std::string& type, auto bounds) {  // rounded_form::fixed_bound_exponents<digits>
+    using exponents = decltype(bounds);
+    code["contact_" + type] = std::ldexp(1.0, exponents::contact);
+    code["contact_cancellation_" + type] = std::ldexp(1.0, exponents::contact_cancellation);
+    code["impact_" + type] = std::ldexp(1.0, exponents::impact);
+    code["release_" + type] = std::ldexp(1.0, exponents::release);
+  };
+  add("double", rounded_form::fixed_bound_exponents<53>{});
+  add("long_double", rounded_form::fixed_bound_exponents<64>{});
+  add("float128", rounded_form::fixed_bound_exponents<113>{});
   std::set<std::string> seen;
   std::string line;
   while (std::getline(in, line)) {
@@ -398,43 +389,139 @@ TEST(RoundedFastPath, FixedBoundsAreTheProvenOnes) {
   EXPECT_EQ(seen.size(), code.size());
 }
 
+template <class T>
+class RoundedFixedStep : public ::testing::Test {};
+using fixed_step_types = ::testing::Types<double, long double, float128>;
+TYPED_TEST_SUITE(RoundedFixedStep, fixed_step_types, type_names_for_gtest);
+
 // The step's s0 is the stable formula's value bit for bit (the Gappa models take the
 // stable path's proven bound for it), computed here to share its square root.
-TEST(RoundedFastPath, FixedStepStartsFromTheStableFormula) {
+TYPED_TEST(RoundedFixedStep, StartsFromTheStableFormula) {
+  using T = TypeParam;
+  static_assert(rounded_form::has_fixed_bounds<T>);
+  set_up_type<T>();
   std::mt19937_64 engine(20261123);
   std::uniform_int_distribution<int> exponent(-80, 80), sign(0, 1);
   std::uniform_real_distribution<double> significand(1, 2);
   auto draw = [&](bool positive) {
-    const double x = std::ldexp(significand(engine), exponent(engine));
-    return positive || sign(engine) ? x : -x;
+    const T x = std::ldexp(significand(engine), exponent(engine)) * (1 + T(significand(engine)) / 0x1p53);
+    return positive || sign(engine) ? x : T(-x);
   };
+  const int n = std::is_same_v<T, double> ? 200000 : 20000;
   long counts[3] = {0, 0, 0};
-  for (int i = 0; i < 200000; ++i) {
-    const double u = draw(false), dy = draw(false), phi = draw(true);
+  for (int i = 0; i < n; ++i) {
+    const T u = draw(false), dy = draw(false), phi = draw(true);
+    T s0, stable;
     if (dy < 0 && u > -dy) {
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(rounded_form::impact_step(u, dy, phi).s0),
-                std::bit_cast<std::uint64_t>(stable_form::impact(u, -dy, phi)));
+      s0 = rounded_form::impact_step(u, dy, phi).s0;
+      stable = stable_form::impact(u, T(-dy), phi);
       ++counts[0];
     } else if (dy > 0) {
       const bool contact = detail::stays_in_contact<true>(u, dy, phi);
-      const double s0 = contact ? rounded_form::contact_step(u, dy, phi).s0 : rounded_form::release_step(u, dy, phi).s0;
-      const double stable = contact ? stable_form::contact(u, dy, phi) : stable_form::release(u, dy, phi);
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(s0), std::bit_cast<std::uint64_t>(stable)) << u << " " << dy << " " << phi;
+      s0 = contact ? rounded_form::contact_step(u, dy, phi).s0 : rounded_form::release_step(u, dy, phi).s0;
+      stable = contact ? stable_form::contact(u, dy, phi) : stable_form::release(u, dy, phi);
       ++counts[contact ? 1 : 2];
+    } else {
+      continue;
     }
+    EXPECT_TRUE(s0 == stable) << u << " " << dy << " " << phi;
   }
-  for (long count : counts) EXPECT_GT(count, 10000);
+  for (long count : counts) EXPECT_GT(count, n / 20);
 }
 
-// Each fast-path condition fails where its bound is not proven: (A.31) with a heavy
-// cancellation of 2 phi dy and u, (A.30) with the two roots of Q close together.
-TEST(RoundedFastPath, FixedStepConditionsRefuseWhatIsNotProven) {
-  EXPECT_TRUE(rounded_form::contact_step(1.0, 1.0, 1.0).bounded);
-  EXPECT_FALSE(rounded_form::contact_step(2.0 - 0x1p-30, 1.0, 1.0).bounded);  // s ~ 2^-31 dy
-  EXPECT_TRUE(rounded_form::impact_step(2.0, -0.5, 1.0).bounded);
-  // u just above -dy with a large phi: s near dy, the other root at phi dy / (1 + phi)
-  EXPECT_FALSE(rounded_form::impact_step(1.0 + 0x1p-40, -1.0, 0x1p20).bounded);
-  EXPECT_TRUE(rounded_form::release_step(-1.0, 1.0, 1.0).bounded);
+// (A.30)'s margin widens as Q's two roots merge (u just above -dy with a large phi:
+// s near dy, the other root at phi dy / (1 + phi)), and the result stays correctly
+// rounded there.
+TYPED_TEST(RoundedFixedStep, ImpactMarginWidensAsTheRootsMerge) {
+  using T = TypeParam;
+  using std::fabs;
+  using std::ldexp;
+  set_up_type<T>();
+  const T one = 1, u = 1 + ldexp(one, -52), dy = -1, phi = ldexp(one, 40);
+  const auto apart = rounded_form::impact_step(T(2), T(-0.5), one);
+  const auto close = rounded_form::impact_step(u, dy, phi);
+  EXPECT_GT(close.margin / fabs(close.s0), 1000 * (apart.margin / fabs(apart.s0)));
+  const auto traced = detail::solve_rounded_traced(u, dy, phi);
+  EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(u, dy, phi), u, dy, phi));
+}
+
+// (A.31) with 2 phi dy and u equal to 40 bits: s ~ 2^-41 dy, and the margin's
+// cancellation term keeps the step decisive, correctly rounded.
+TYPED_TEST(RoundedFixedStep, ContactStepDecidesAHeavyCancellation) {
+  using T = TypeParam;
+  using std::ldexp;
+  set_up_type<T>();
+  const T one = 1, u = 2 - ldexp(one, -40);
+  const auto step = rounded_form::contact_step(u, one, one);
+  EXPECT_GT(step.margin, ldexp(one, -std::numeric_limits<T>::digits * 2 + 1) * ldexp(one, -41));
+  const auto traced = detail::solve_rounded_traced(u, one, one);
+  EXPECT_FALSE(traced.exact_decision);
+  EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(u, one, one), u, one, one));
+}
+
+// (A.31) with 2 phi dy and u equal to 44 to 52 bits, where the margin's cancellation
+// term is near half an ulp or beyond: the signs of R at the candidate's midpoints
+// decide (the exact decision runs for ties only), every result correctly rounded.
+TYPED_TEST(RoundedFixedStep, ContactMidpointsDecideWhereTheMarginCannot) {
+  using T = TypeParam;
+  using std::ldexp;
+  set_up_type<T>();
+  std::mt19937_64 engine(20261127);
+  std::uniform_real_distribution<double> factor(0.25, 4);
+  std::uniform_int_distribution<int> bits(44, 52);
+  const int n = std::is_same_v<T, double> ? 5000 : 500;
+  int exact_decisions = 0, contacts = 0;
+  for (int i = 0; i < n; ++i) {
+    const T phi = factor(engine), dy = factor(engine);
+    const T u = T(2 * phi * dy) * (1 - ldexp(T(1), -bits(engine)));
+    if (!detail::stays_in_contact<true>(u, dy, phi)) continue;
+    ++contacts;
+    const auto traced = detail::solve_rounded_traced(u, dy, phi);
+    exact_decisions += traced.exact_decision;
+    EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(u, dy, phi), u, dy, phi)) << u << " " << dy << " " << phi;
+  }
+  EXPECT_GT(contacts, n / 2);
+  EXPECT_LE(exact_decisions, contacts / 100);
+}
+
+// An exact tie is not decided by the midpoints: R is zero at one of them.
+TEST(RoundedFixedStep, ContactMidpointsLeaveTiesToTheExactDecision) {
+  const auto ties = read_hard_cases("exact_ties_contact");
+  ASSERT_FALSE(ties.empty());
+  for (const auto& tie : ties) {
+    if (!detail::inside_plain_window(tie.u, tie.dy, tie.phi) || !detail::in_fast_window(tie.s, false)) continue;
+    EXPECT_FALSE(rounded_form::contact_rounded_by_midpoints(tie.s, tie.u, tie.dy, tie.phi)) << tie.line;
+  }
+}
+
+// The midpoints' walk on its own: from a candidate an ulp or two off it reaches the
+// rounded root, from further off it gives up, and it never looks beyond dy nor
+// outside the window.
+TYPED_TEST(RoundedFixedStep, ContactMidpointsWalkAFewUlpsAndNoFurther) {
+  using T = TypeParam;
+  set_up_type<T>();
+  const T contact_u = T(3), dy = T(1), phi = T(3), root = T(0.75);  // (2 phi dy - u) / (1 + phi), exact
+  EXPECT_FALSE(rounded_form::contact_rounded_by_midpoints(dy, contact_u, dy, phi));
+  EXPECT_FALSE(rounded_form::contact_rounded_by_midpoints(std::numeric_limits<T>::denorm_min(), contact_u, dy, phi));
+  T below = root, above = root;
+  for (int i = 0; i < 2; ++i) below = detail::next_down(below), above = detail::next_up(above);
+  EXPECT_EQ(rounded_form::contact_rounded_by_midpoints(below, contact_u, dy, phi), std::optional<T>(root));
+  EXPECT_EQ(rounded_form::contact_rounded_by_midpoints(above, contact_u, dy, phi), std::optional<T>(root));
+  for (int i = 0; i < 8; ++i) below = detail::next_down(below);
+  EXPECT_FALSE(rounded_form::contact_rounded_by_midpoints(below, contact_u, dy, phi));
+}
+
+// Inside the window, on ordinary inputs, the step decides: the exact decision is
+// left to the rare inputs whose root lies near a midpoint.
+TYPED_TEST(RoundedFixedStep, DecidesOrdinaryInputsWithoutTheExactDecision) {
+  using T = TypeParam;
+  set_up_type<T>();
+  const T inputs[][3] = {{T(0.25), T(1), T(3)}, {T(3), T(1), T(0.5)}, {T(2), T(-0.5), T(1)}, {T(-1), T(1), T(1)}};
+  for (const auto& x : inputs) {
+    const auto traced = detail::solve_rounded_traced(x[0], x[1], x[2]);
+    EXPECT_FALSE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
+    EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(x[0], x[1], x[2]), x[0], x[1], x[2]));
+  }
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
-# Branch: solve_rounded<double>, case (A.31), rounded_form::contact_step, the Newton step
+# Branch: solve_rounded<T>, case (A.31), rounded_form::contact_step, the Newton step
 # of the correctly rounded mode's fast path:
-#   denominator = 1 + phi;  s0 = fma(phi, 2 * dy, -u) / denominator (stable_form::contact);
-#   inverse = 1 / denominator;
+#   s0 = stable_form::contact(u, dy, phi) = fma(phi, 2 * dy, -u) / (1 + phi);
+#   inverse = 1 / (1 + phi);
 #   g = two_sum(2 * dy, -s0);  m = product(phi, g.high);  w = two_sum(u, s0);
 #   r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);  delta = r * inverse;
-# taken only where phi dy <= 64 (1 + phi) |s0| (contact_cancellation_limit).
+# This file covers phi dy <= (1 + phi) |S|; rounded_contact_cancellation.g the rest.
 # Goal: err = (s0 + delta - S) / S, S the exact root, and delta / S.
 #
 # Model: as in rounded_release.g, every rounding x (1 + d), |d| <= 2^-53, two_sum and
@@ -12,12 +12,15 @@
 # D = 1 + phi, so Q(s0) = -(N - s0 D) and Newton's step has no error of its own; what
 # remains is the rounding of r = N - s0 D = phi (2 dy - s0) - (u + s0).
 # Lengths are in units of S (either sign), r in units of D S; theta = phi / D in [0, 1),
-# y = dy / S, ty = theta y, bounded by the condition (|ty| <= 64 (1 + 2^-46), the check's
-# roundings). Then u / (D S) = 2 ty - 1, theta (2 dy - s0) / S = 2 ty - theta (1 + e0),
+# y = dy / S, ty = theta y in [-1, 1]. Then u / (D S) = 2 ty - 1, theta (2 dy - s0) / S = 2 ty - theta (1 + e0),
 # (u + s0) / (D S) = (2 ty - 1) + (1 - theta)(1 + e0), and r = -e0 exactly.
 # s0 = S (1 + e0): |e0| <= 3.01 ulps x 2^-52 (claimed_bounds.txt, checked by gappa_rounded).
+# The file is the binary64 instance. gappa_rounded also runs it for x87 extended and
+# binary128: every 2^-53 (1b-53) becomes 2^-p (p = 64, 113) and the bound on |e0| is
+# scaled by 2^(53 - p) (claimed_bounds.txt's ulps are proven at those widths too).
+# Interval ends carry 400 bits, so that terms of order 2^-2p keep their size.
+#@ -Eprecision=400
 #! stable e0: contact
-#! condition ty <= contact_cancellation_limit
 #
 # The hints: see rounded_release.g; the assumed nonzero denominator is 1 + dd.
 tG = 2 * ty - theta * (1 + e0);
@@ -37,7 +40,7 @@ X = (1 + de) / (1 + dd) * (1 + dm);
 delta = r * X;
 err = e0 + delta;
 
-{ theta in [0, 1] /\ ty in [-64.01, 64.01] /\ |e0| <= 6.6836e-16 /\
+{ theta in [0, 1] /\ ty in [-1, 1] /\ |e0| <= 6.6836e-16 /\
   |d1| <= 1b-53 /\ |d2| <= 1b-53 /\ |d3| <= 1b-53 /\ |d4| <= 1b-53 /\ |d5| <= 1b-53 /\ |d6| <= 1b-53 /\
   |d7| <= 1b-53 /\ |d8| <= 1b-53 /\ |dd| <= 1b-53 /\ |de| <= 1b-53 /\ |dm| <= 1b-53
   -> err in ? /\ delta in ? }

@@ -1,7 +1,9 @@
-# Branch: solve_rounded<double>, case (A.32), rounded_form::release_step, the Newton step
+# Branch: solve_rounded<T>, case (A.32), rounded_form::release_step, the Newton step
 # of the correctly rounded mode's fast path:
-#   stiffness_term = (phi * dy) * dy;  root = sqrt(fma(u, u, 4 * stiffness_term));
-#   s0 = stable_form::release (same operations);  inverse = 1 / root;
+#   [s0, root] = stable_form::release_with_square_root(u, dy, phi): s0 and
+#   root = sqrt(fma(u, u, 4 * term)), term = phi dy^2 rounded as (phi * dy) * dy
+#   (u <= 0), or as st + st_low (u > 0: the pair within 2^-105 of phi dy^2, then one
+#   rounding), two roundings or fewer either way (da, db below);  inverse = 1 / root;
 #   w = two_sum(s0, u);  a = product(s0, w.high);  a_low = s0 * w.low + a.low;
 #   b = product(phi, dy);  c = product(b.high, dy);  c_low = b.low * dy + c.low;
 #   q = (a.high - c.high) + (a_low - c_low);  delta = -q * inverse;
@@ -18,6 +20,11 @@
 # tau = 4 phi dy^2 / disc in [0, 1]: the discriminant is a sum of non-negative terms.
 # s0 = S (1 + e0): |e0| <= 6.51 ulps x 2^-52, the stable path's bound for both release
 # branches (claimed_bounds.txt, checked by gappa_rounded through the line below).
+# The file is the binary64 instance. gappa_rounded also runs it for x87 extended and
+# binary128: every 2^-53 (1b-53) becomes 2^-p (p = 64, 113) and the bound on |e0| is
+# scaled by 2^(53 - p) (claimed_bounds.txt's ulps are proven at those widths too).
+# Interval ends carry 400 bits, so that terms of order 2^-2p keep their size.
+#@ -Eprecision=400
 #! stable e0: release_u_positive release_u_nonpositive
 #
 # The hints split each difference into the rounding errors it is made of; Gappa checks

@@ -14,7 +14,10 @@
 //     precision (below); for solve_rounded, s* rounded to nearest, ties to
 //     even, at the subnormal spacing below the least normal value
 //     (exact::format_of::is_rounded_root), and a zero of the sign rounded.hpp
-//     gives it.
+//     gives it. A 6-bit format has no fast path (rounded_form::has_fixed_bounds),
+//     so every triple takes the exact decision; the fast path of double, long
+//     double and float128 is proven by Gappa (proofs.gappa.rounded) and tested
+//     (rounded_test).
 //
 // Nothing computes s*: every check is a sign of R at a dyadic point
 // (exact_root.hpp). Each box must also reach all four cases on both the plain

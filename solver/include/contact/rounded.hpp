@@ -42,14 +42,16 @@ inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && s
 //    within a few ulps; one Newton step on the case's polynomial Q (the
 //    quadratic or linear equation whose root the case's closed form is), with
 //    Q(s0) evaluated by error-free transformations, gives s0 + delta within
-//    about 2^-2p |s| of the root. In double inside the plain window the bound
-//    is a constant per case, proven by Gappa from the stable path's proven
-//    bound (fixed_bound_<case>); elsewhere it is computed as the step goes (no
-//    a-priori error claim of the stable path enters).
+//    about 2^-2p |s| of the root. The bound's constants, per case and type,
+//    are proven by Gappa from the stable path's proven bound
+//    (fixed_bound_exponents). float runs the stable formulas in
+//    double instead (round_through_double).
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
-//    rounds as s0 + delta does.
-// 3. Otherwise, and outside the exponent window where step 1 is analysed, the
+//    rounds as s0 + delta does. In (A.31), where a heavy cancellation widens the
+//    bound beyond that, the signs of R at the candidate's midpoints decide (as
+//    in step 3, but in T).
+// 3. Otherwise, and outside the exponent window where step 1 is proven, the
 //    exact decision: R is strictly increasing, so the root lies above a
 //    midpoint m exactly when R(m) < 0, and on each side of dy the sign of R(m)
 //    is that of a polynomial in m, u, dy and phi whose terms are products of
@@ -250,37 +252,14 @@ T signed_zero_for_root(const T& u, const T& dy, const T& phi) {
   return at_zero.sign() > 0 ? T(-0.0) : T(0);
 }
 
-// ---- the fast approximation ----------------------------------------------------
-
-// Half the gaps from a normal x to its neighbours below and above: half the
-// ulp of x, or a quarter towards zero when |x| is a power of two.
+// safe_window<T>::holds (|x| in [2^-w, 2^w] or x = 0, w = safe_window<T>::half_width()),
+// for double on the exponent bits; the fast path's analysis assumes u, dy, phi
+// and s0 there. zero_allowed: whether x = 0 passes.
 template <class T>
-struct gap_pair {
-  T below, above;
-};
-
-template <class T>
-gap_pair<T> half_gaps(const T& x) {
-  using std::fabs;
-  T power;  // 2^e <= |x| < 2^(e+1)
-  if constexpr (detail::hardware_binary<T>) {
-    using layout = binary_layout<T>;  // the exponent field alone
-    power = std::bit_cast<T>(std::bit_cast<typename layout::bits>(x) & (layout::exponent_field << layout::significand_bits));
-  } else if constexpr (detail::emulated_format<T>::available) {  // x87 long double, binary128: the binade from the bits
-    using format = detail::emulated_format<T>;
-    detail::unpacked_binary parts;
-    format::unpack(x, parts);
-    power = format::pack(false, parts.exponent + format::digits - 1, detail::uint128(1) << (format::digits - 1));
-  } else {
-    using std::frexp;
-    using std::ldexp;
-    int e = 0;
-    frexp(x, &e);
-    power = ldexp(T(1), e - 1);
-  }
-  const T away = power * std::numeric_limits<T>::epsilon() / 2;  // ulp(x) / 2
-  const T toward = fabs(x) == power ? T(away / 2) : away;
-  return x > 0 ? gap_pair<T>{toward, away} : gap_pair<T>{away, toward};
+bool in_fast_window(const T& x, bool zero_allowed) {
+  if (x == 0) return zero_allowed;
+  if constexpr (std::is_same_v<T, double>) return magnitude_inside_plain_window(x);
+  else return safe_window<T>::holds(x);
 }
 
 }  // namespace detail
@@ -320,45 +299,9 @@ template <class T>
   return {high, ((a_high * b_high - high) + a_high * b_low + a_low * b_high) + a_low * b_low};
 }
 
-// Q(s0), Q'(s0) of the case's polynomial Q, with error bounds, an upper bound
-// on Q's leading coefficient (0 for a linear Q), and the sign Q' has at the
-// wanted root (0: any, for a linear Q).
-template <class T>
-struct residual {
-  T value, error, slope, slope_error, curvature;
-  int root_slope_sign;
-};
-
-// Every rounding below errs by at most eps |result| + eta (eps = 2^-p; eta, the
-// absolute error of an underflow, is at most half the least subnormal: the least
-// normal is taken, so that no bound has a subnormal operand, which costs time);
-// the bounds add these up, with the terms that the exact expansions leave out.
-template <class T>
-constexpr T eps = std::numeric_limits<T>::epsilon() / 2;
-template <class T>
-constexpr T eta = (std::numeric_limits<T>::min)();
-
-// (A.31): Q(s) = (1 + phi) s + u - 2 phi dy = s0 D - N with N = 2 phi dy - u =
-// n.high + n.low + p.low and D = 1 + phi = d.high + d.low, each split exact.
-template <class T>
-residual<T> contact(const T& s0, const T& u, const T& dy, const T& phi) {
-  using std::fabs;
-  const auto p = product(phi, T(2 * dy));
-  const auto n = detail::two_sum(p.high, T(-u));
-  const auto d = detail::two_sum(T(1), phi);
-  const auto t = product(s0, d.high);                  // t.high ~ n.high
-  const T r1 = (t.high - n.high) + t.low;              // s0 d.high - n.high, small
-  const T r2 = s0 * d.low - (n.low + p.low);
-  const T q = r1 + r2;
-  // r1: 2 roundings; r2: 3 (s0 d.low, n.low + p.low, the difference); q: 1
-  const T error = eps<T> * (2 * fabs(r1) + fabs(s0 * d.low) + 2 * fabs(n.low + p.low) + 2 * fabs(r2) + fabs(q)) +
-                  10 * eta<T>;
-  return {q, error, d.high, fabs(d.low), T(0), 0};
-}
-
 // s0 (s0 + u), the term (A.30) and (A.32) share: s0 + u = sum.high + sum.low
 // exactly (TwoSum), and s0 (s0 + u) = product.high + product.low up to the one
-// rounding of s0 sum.low, which the bounds count as eps |s0 sum.low|.
+// rounding of s0 sum.low.
 template <class T>
 struct own_sum_product {
   detail::exact_pair<T> sum, product;
@@ -371,166 +314,172 @@ own_sum_product<T> times_own_sum(const T& s0, const T& u) {
   return {sum, {high.high, s0 * sum.low + high.low}};
 }
 
-// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s) = 2 s + u, the larger root, Q' > 0 there.
-template <class T>
-residual<T> release(const T& s0, const T& u, const T& dy, const T& phi) {
-  using std::fabs;
-  const auto [w, a] = times_own_sum(s0, u);
-  const auto b = product(phi, dy);
-  const auto c = product(b.high, dy);
-  const T c_low = b.low * dy + c.low;     // phi dy^2 = c.high + c_low
-  const T q1 = a.high - c.high, q2 = a.low - c_low, q = q1 + q2;
-  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a.low) + fabs(b.low * dy) + 2 * fabs(c_low) + fabs(q1) +
-                            fabs(q2) + fabs(q)) + 12 * eta<T>;
-  const T slope = w.high + s0;  // 2 s0 + u - w.low
-  return {q, error, slope, T(fabs(w.low) + eps<T> * fabs(slope) + eta<T>), T(1), 1};
-}
+// ---- one Newton step with a fixed, proven bound ---------------------------------
+//
+// The step below comes with a bound K |s0| on |s0 + delta - s*|, K a constant per
+// case and per significand width ((A.31) adds K' phi dy / (1 + phi), below):
+// proofs/gappa/rounded_<case>.g proves the
+// relative bound from the stable path's proven bound on |s0 - s*|
+// (claimed_bounds.txt, proven for 53, 64 and 113 bits), and gappa_rounded checks
+// that K covers it and the rounding test's own roundings
+// (proofs/rounded_bounds.txt, which rounded_test holds these constants to). The
+// models assume that no operation of the step over- or underflows, which holds
+// when u, dy, phi and s0 lie in safe_window (docs/equations.md section 7). Each
+// case's slope is the exact derivative at the root, a quantity the stable formula
+// already has (1 + phi, or the square root of the discriminant), so its reciprocal
+// is computed alongside s0 rather than after the residual; Q(s0) is evaluated with
+// error-free products and sums.
 
-// (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s) = 2 s + u - 2 phi (dy - s),
-// the smaller root, Q' < 0 there.
-template <class T>
-residual<T> impact(const T& s0, const T& u, const T& dy, const T& phi) {
-  using std::fabs;
-  const auto [w, a] = times_own_sum(s0, u);
-  const auto g = detail::two_sum(dy, T(-s0));  // dy - s0, exact
-  const auto k = product(g.high, g.high);
-  const T k_low = 2 * g.high * g.low + k.low;  // (dy - s0)^2 = k.high + k_low + g.low^2
-  const auto m = product(phi, k.high);
-  const T m_low = phi * k_low + m.low;         // phi (dy - s0)^2 = m.high + m_low
-  const T q1 = a.high + m.high, q2 = a.low + m_low, q = q1 + q2;
-  const T k_error = eps<T> * (fabs(2 * g.high * g.low) + 2 * fabs(k_low) + eps<T> * k.high) + 4 * eta<T>;  // + g.low^2
-  const T error = eps<T> * (fabs(s0 * w.low) + 2 * fabs(a.low) + fabs(phi * k_low) + 2 * fabs(m_low) + fabs(q1) +
-                            fabs(q2) + fabs(q)) + phi * k_error + 12 * eta<T>;
-  const T slope1 = s0 + w.high, slope2 = phi * g.high, slope = slope1 - 2 * slope2;
-  const T slope_error =
-      eps<T> * (fabs(slope1) + 2 * slope2 + fabs(slope)) + fabs(w.low) + 2 * phi * fabs(g.low) + 4 * eta<T>;
-  return {q, error, slope, slope_error, T(1 + phi), -1};
-}
-
-// s0 + delta (high + low exactly) and a bound on its distance to the root.
-template <class T>
-struct approximation {
-  T high, low, bound;
-  bool valid;  // false: no bound could be given (the exact decision takes over)
+// log2 K per case, by significand width; a type of another width has no fast
+// path (the exact decision decides).
+template <int Digits>
+struct fixed_bound_exponents {};
+template <>
+struct fixed_bound_exponents<53> {  // binary64
+  static constexpr int contact = -99, contact_cancellation = -99, impact = -97, release = -96;
+};
+template <>
+struct fixed_bound_exponents<64> {  // x87 extended
+  static constexpr int contact = -121, contact_cancellation = -121, impact = -119, release = -119;
+};
+template <>
+struct fixed_bound_exponents<113> {  // binary128
+  static constexpr int contact = -219, contact_cancellation = -219, impact = -217, release = -217;
 };
 
-// One Newton step s0 + delta, delta = -Q(s0) / Q'(s0), on the case's polynomial Q
-// of leading coefficient a (the curvature bound). The bound is computed
-// alongside delta, not from it: it uses a cap on |delta| of 2^(5-p) |s0| (16 ulps;
-// the stable path is within 3.01), and a step beyond the cap is refused. With
-// rho = slope_error / |slope|:
-// - delta rounded: |delta~ - delta| (1 - rho) <= 2 eps |delta~| + eta + error / |slope| + rho |delta~|
-//   (1 / |slope| and the product each round once).
-// - Newton's own error: Q is quadratic, so s0 + delta - s* = a e^2 / Q'(s0) exactly,
-//   e = s0 - s*. With Q'(s0) of the sign Q' has at the wanted root (s0 on the
-//   root's side of the parabola's vertex), |e| <= 2 |delta|: for roots s* and
-//   s' = s* + D (the smaller root wanted), Q(s0) = a e (e - D), Q'(s0) = a (2e - D) < 0
-//   for e < D/2, and |delta| / |e| = |e - D| / |2e - D| >= 1/2 there (mirrored for
-//   the larger root).
-// The sum is doubled, which covers the roundings of the bound's own evaluation.
 template <class T>
-approximation<T> newton_step(const T& s0, const residual<T>& q) {
-  using std::fabs;
-  const T magnitude = fabs(q.slope);
-  const T inverse = 1 / magnitude;
-  const T delta = (q.slope > 0 ? T(-q.value) : q.value) * inverse;
-  const T cap = fabs(s0) * (32 * eps<T>);
-  const T rho = q.slope_error * inverse;  // <= 1/4 (checked below), so 1 / (1 - rho) <= 4/3 < 1.5
-  const T step_error = ((2 * eps<T> + rho) * cap + eta<T> + q.error * inverse) * T(1.5);
-  const T delta_bound = cap + step_error;
-  const T newton_error = q.curvature * 4 * delta_bound * delta_bound * (inverse * T(1.5));
-  // the sign of Q'(s0) is certain and that of Q' at the wanted root, and the step within the cap
-  const bool root_side = q.root_slope_sign == 0 || (q.slope > 0) == (q.root_slope_sign > 0);
-  const bool valid = magnitude > 4 * q.slope_error && root_side && fabs(delta) <= cap;
-  const auto [high, low] = detail::two_sum(s0, delta);
-  return {high, low, 2 * (step_error + newton_error) + eta<T>, valid};
+using fixed_bounds_of = fixed_bound_exponents<std::numeric_limits<T>::digits>;
+
+template <class T>
+concept has_fixed_bounds = rounded_available<T> && requires { fixed_bounds_of<T>::contact; };
+
+// 2^Exponent in T (a constant for the hardware types).
+template <class T, int Exponent>
+T power_of_two() {
+  if constexpr (std::is_floating_point_v<T>) {
+    constexpr T power = [] {
+      T x = 1;
+      for (int k = 0; k < -Exponent; ++k) x /= 2;
+      return x;
+    }();
+    return power;
+  } else {
+    using std::ldexp;
+    static const T power = ldexp(T(1), Exponent);
+    return power;
+  }
 }
 
-// Whether the approximation rounds as the root does: no midpoint between
-// high and a neighbour lies within the bound of high + low. Both ends are
-// rounded sums, and rounding is monotonic, so the comparisons with the exact
-// half gaps are safe: low + bound >= gap/2 would round to >= gap/2.
+// s0 + delta lies within `margin` of the root.
 template <class T>
-bool rounds_as_root(const approximation<T>& x) {
-  if (!x.valid) return false;
-  const auto gaps = detail::half_gaps(x.high);
-  return T(x.low + x.bound) < gaps.above && T(x.low - x.bound) > -gaps.below;
-}
-
-// ---- double: one Newton step with a fixed, proven bound ------------------------
-//
-// Inside the plain window, in double, the step below comes with a bound K |s0| on
-// |s0 + delta - s*| that is a constant per case: proofs/gappa/rounded_<case>.g
-// proves the relative bound from the stable path's proven bound on |s0 - s*|
-// (claimed_bounds.txt), and gappa_rounded checks that K covers it and the
-// rounding test's own roundings (proofs/rounded_bounds.txt, which rounded_test
-// holds these constants to). Each case's slope is the exact derivative at the
-// root, a quantity the stable formula already has (1 + phi, or the square root
-// of the discriminant), so its reciprocal is computed alongside s0 rather than
-// after the residual; Q(s0) is evaluated with error-free products and sums.
-inline constexpr double fixed_bound_contact = 0x1p-94;
-inline constexpr double fixed_bound_impact = 0x1p-93;
-inline constexpr double fixed_bound_release = 0x1p-96;
-// Where the bound is proven: in (A.31) the inputs' cancellation is limited,
-// phi dy <= 64 (1 + phi) |s0|; in (A.30) the two roots of Q are apart, sqrt(disc)
-// >= (1 + phi) |s0| / 16 (Newton's quadratic term grows as they merge).
-inline constexpr double contact_cancellation_limit = 64;
-inline constexpr double impact_separation_limit = 0x1p-4;
-
 struct fixed_step {
-  double s0, delta;
-  bool bounded;  // false: outside the conditions the fixed bound is proven under
+  T s0, delta, margin;
 };
 
 // (A.31): Q(s) = (1 + phi) s - (2 phi dy - u); Q(s0) = phi (2 dy - s0) - (u + s0) exactly
-// as (m.high - w.high) + (m.low + phi g.low - w.low), m.high and w.high close.
-inline fixed_step contact_step(double u, double dy, double phi) {
+// as (m.high - w.high) + (m.low + phi g.low - w.low), m.high and w.high close. The
+// residual's roundings scale with the cancelling terms, of order phi dy / (1 + phi),
+// not with s0, so the margin has a term of each: K |s0| + K' phi dy / (1 + phi).
+template <class T>
+fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  const double denominator = 1 + phi;
-  const double s0 = std::fma(phi, 2 * dy, -u) / denominator;  // stable_form::contact
-  const double inverse = 1 / denominator;
-  const auto g = detail::two_sum(2 * dy, -s0);
+  using bounds = fixed_bounds_of<T>;
+  const T s0 = stable_form::contact(u, dy, phi);
+  const T inverse = 1 / T(1 + phi);
+  const auto g = detail::two_sum(T(2 * dy), T(-s0));
   const auto m = product(phi, g.high);
   const auto w = detail::two_sum(u, s0);
-  const double r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);
-  return {s0, r * inverse, phi * dy <= contact_cancellation_limit * (denominator * fabs(s0))};
+  const T r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);
+  const T margin = power_of_two<T, bounds::contact>() * fabs(s0) +
+                   power_of_two<T, bounds::contact_cancellation>() * (phi * dy * inverse);
+  return {s0, r * inverse, margin};
 }
 
-// (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc).
-inline fixed_step impact_step(double u, double dy, double phi) {
+// The sign of (A.31)'s R(m) = (1 + phi) m + u - 2 phi dy at m = c + h (h a power of
+// two, half the gap from c to a neighbour): an exact sum of products of T values,
+// as the exact decision's, but in T itself, since with u, dy, phi in the fast
+// window and c inside it (checked) none of these products or sums over- or
+// underflows (docs/equations.md section 7).
+template <class T>
+int contact_residual_sign(const T& c, const T& h, const T& u, const T& dy, const T& phi) {
+  const auto phi_c = detail::two_prod(phi, c);
+  const auto push = detail::two_prod(phi, T(-2 * dy));
+  const T terms[8] = {c, h, phi_c.high, phi_c.low, T(phi * h), u, push.high, push.low};
+  return detail::sign_of_exact_sum(terms);
+}
+
+// Where the margin of a heavy cancellation is too wide for the rounding test: the
+// candidate c is the rounded root when R is negative at the midpoint below it and
+// positive at the one above (R is increasing); otherwise the neighbour on the
+// root's side is tried, a few times (the step itself may be some ulps off there).
+// Empty when a sign is zero (a tie, which the exact decision sends to the even
+// neighbour), after the last try, when an upper midpoint lies beyond dy, on
+// (A.32)'s side, or when c has left the window (only a cancellation of far more
+// than p bits can move it that far).
+template <class T>
+std::optional<T> contact_rounded_by_midpoints(T c, const T& u, const T& dy, const T& phi) {
+  constexpr int tries = 4;
+  for (int i = 0; i < tries; ++i) {
+    const T above = detail::next_up(c), below = detail::next_down(c);
+    if (!(above <= dy) || !detail::in_fast_window(c, false)) return std::nullopt;
+    const int at_above = contact_residual_sign(c, T((above - c) / 2), u, dy, phi);
+    if (at_above < 0) {
+      c = above;
+      continue;
+    }
+    const int at_below = contact_residual_sign(c, T((below - c) / 2), u, dy, phi);
+    if (at_below > 0) {
+      c = below;
+      continue;
+    }
+    if (at_above > 0 && at_below < 0) return c;
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc). Newton's square
+// term grows as Q's two roots merge, so the margin is K (1 + phi) s0^2 / sqrt(disc),
+// K |s0| over their relative distance (the discriminant is a sum of non-negative
+// terms, u^2 > 0 among them, so the root is not 0 in the window).
+template <class T>
+fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  const auto [s0, root] = stable_form::impact_with_square_root(u, -dy, phi);
-  const double denominator = 1 + phi;
-  const double inverse = 1 / root;
+  const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
+  const T denominator = 1 + phi;
+  const T inverse = 1 / root;
   const auto a = times_own_sum(s0, u).product;
-  const auto g = detail::two_sum(dy, -s0);
+  const auto g = detail::two_sum(dy, T(-s0));
   const auto k = product(g.high, g.high);
-  const double k_low = 2 * g.high * g.low + k.low;
+  const T k_low = 2 * g.high * g.low + k.low;
   const auto m = product(phi, k.high);
-  const double m_low = phi * k_low + m.low;
-  const double q = (a.high + m.high) + (a.low + m_low);
-  return {s0, q * inverse, root >= impact_separation_limit * (denominator * fabs(s0))};
+  const T m_low = phi * k_low + m.low;
+  const T q = (a.high + m.high) + (a.low + m_low);
+  return {s0, q * inverse, power_of_two<T, fixed_bounds_of<T>::impact>() * (denominator * s0 * s0 * inverse)};
 }
 
-// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*: always bounded.
-inline fixed_step release_step(double u, double dy, double phi) {
+// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*.
+template <class T>
+fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
+  using std::fabs;
   const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
-  const double inverse = 1 / root;
+  const T inverse = 1 / root;
   const auto a = times_own_sum(s0, u).product;
   const auto b = product(phi, dy);
   const auto c = product(b.high, dy);
-  const double c_low = b.low * dy + c.low;
-  const double q = (a.high - c.high) + (a.low - c_low);
-  return {s0, -q * inverse, true};
+  const T c_low = b.low * dy + c.low;
+  const T q = (a.high - c.high) + (a.low - c_low);
+  return {s0, T(-q * inverse), power_of_two<T, fixed_bounds_of<T>::release>() * fabs(s0)};
 }
 
-// The root lies in [s0 + delta - K |s0|, s0 + delta + K |s0|], and both ends as
-// rounded here enclose that interval (K covers these roundings too); rounding
-// to nearest is monotonic, so when both ends round alike the root rounds so.
-inline bool rounds_alike(double s0, double delta, double factor, double& rounded) {
-  const double margin = factor * std::fabs(s0);
-  const double below = s0 + (delta - margin);
-  rounded = s0 + (delta + margin);
+// The root lies in [s0 + delta - margin, s0 + delta + margin], and both ends as
+// rounded here enclose that interval (the margin's constants cover these roundings
+// too); rounding to nearest is monotonic, so when both ends round alike the root
+// rounds so.
+template <class T>
+bool rounds_alike(const fixed_step<T>& step, T& rounded) {
+  const T below = step.s0 + (step.delta - step.margin);
+  rounded = step.s0 + (step.delta + step.margin);
   return below == rounded;
 }
 
@@ -569,16 +518,6 @@ inline bool round_through_double(const float& u, const float& dy, const float& p
 
 namespace detail {
 
-// safe_window<T>::holds (|x| in [2^-w, 2^w] or x = 0, w = safe_window<T>::half_width()),
-// for double on the exponent bits; the fast path's analysis assumes u, dy, phi
-// and s0 there. zero_allowed: whether x = 0 passes.
-template <class T>
-bool in_fast_window(const T& x, bool zero_allowed) {
-  if (x == 0) return zero_allowed;
-  if constexpr (std::is_same_v<T, double>) return magnitude_inside_plain_window(x);
-  else return safe_window<T>::holds(x);
-}
-
 template <class T>
 struct traced_solution {
   solution<T> result;
@@ -600,37 +539,40 @@ template <class T>
   return {{s, stable.which}, true};
 }
 
-// double inside the plain window: the fixed-bound step. Empty where its
-// conditions fail (the run-time bound then decides); a failed rounding test
-// goes to the exact decision, from s0 + delta.
-inline std::optional<traced_solution<double>> rounded_by_fixed_bound(double u, double dy, double phi) {
-  rounded_form::fixed_step step;
+// The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0): the
+// stable path's case decision and its formulas, unclamped (Newton's step needs
+// s0 near the root, not on its side of dy). Where the step's conditions fail, s0
+// leaves the window or the rounding test fails, the exact decision decides, from
+// the best candidate at hand.
+template <class T>
+traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
+  rounded_form::fixed_step<T> step;
   contact_case which;
-  double factor;
-  if (dy < 0) {
-    if (u <= -dy) return traced_solution<double>{{-u, contact_case::free}, false};  // (A.29) s = -u, exact
+  if (dy <= 0) {
+    if (u <= -dy) return {{T(-u), contact_case::free}, false};  // (A.29) s = -u, exact
     step = rounded_form::impact_step(u, dy, phi);
     which = contact_case::impact;
-    factor = rounded_form::fixed_bound_impact;
   } else if (stays_in_contact<true>(u, dy, phi)) {
     step = rounded_form::contact_step(u, dy, phi);
     which = contact_case::contact;
-    factor = rounded_form::fixed_bound_contact;
   } else {
     step = rounded_form::release_step(u, dy, phi);
     which = contact_case::release;
-    factor = rounded_form::fixed_bound_release;
   }
-  if (!step.bounded || !magnitude_inside_plain_window(step.s0)) return std::nullopt;
-  double rounded;
-  if (rounded_form::rounds_alike(step.s0, step.delta, factor, rounded)) [[likely]]
-    return traced_solution<double>{{rounded, which}, false};
-  const solution<double> start{step.s0 + step.delta, which};
-  return rounded_by_exact_decision<double>(u, dy, phi, &start);
+  if (in_fast_window(step.s0, false)) [[likely]] {
+    T rounded;
+    if (rounded_form::rounds_alike(step, rounded)) [[likely]] return {{rounded, which}, false};
+    step.s0 += step.delta;  // the nearer candidate
+    if (which == contact_case::contact) {
+      if (auto decided = rounded_form::contact_rounded_by_midpoints(step.s0, u, dy, phi))
+        return {{*decided, which}, false};
+    }
+  }
+  const solution<T> start{step.s0, which};
+  return rounded_by_exact_decision<T>(u, dy, phi, &start);
 }
 
-// Everything but double's fixed-bound step, out of line so that the step's
-// caller stays small.
+// Everything but double's common case, out of line so that its caller stays small.
 template <class T>
 [[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
   using std::isfinite;
@@ -640,32 +582,13 @@ template <class T>
     if (rounded_form::round_through_double(u, dy, phi, result)) return {result, false};
     return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
   } else {
-    // Outside the window where the Newton step is analysed (invalid input
-    // included), straight to the exact decision.
-    if (!(in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0)))
-      return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
-    // The stable path's case decision and its formulas, unclamped: Newton's step
-    // needs s0 near the root, not on its side of dy.
-    solution<T> start;
-    rounded_form::residual<T> q;
-    if (dy <= 0) {
-      if (u <= -dy) return {{T(-u), contact_case::free}, false};  // (A.29) s = -u, exact
-      start = {stable_form::impact(u, T(-dy), phi), contact_case::impact};  // (A.30)
-      if (!in_fast_window(start.s, false)) return rounded_by_exact_decision<T>(u, dy, phi, &start);
-      q = rounded_form::impact(start.s, u, dy, phi);
-    } else if (stays_in_contact<true>(u, dy, phi)) {
-      start = {stable_form::contact(u, dy, phi), contact_case::contact};  // (A.31)
-      if (!in_fast_window(start.s, false)) return rounded_by_exact_decision<T>(u, dy, phi, &start);
-      q = rounded_form::contact(start.s, u, dy, phi);
-    } else {
-      start = {stable_form::release(u, dy, phi), contact_case::release};  // (A.32)
-      if (!in_fast_window(start.s, false)) return rounded_by_exact_decision<T>(u, dy, phi, &start);
-      q = rounded_form::release(start.s, u, dy, phi);
+    // Outside the window where the Newton step is proven (invalid input
+    // included), or for a type with no proven bound, straight to the exact decision.
+    if constexpr (rounded_form::has_fixed_bounds<T>) {
+      if (in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0))
+        return rounded_by_fixed_bound(u, dy, phi);
     }
-    const auto x = rounded_form::newton_step(start.s, q);
-    if (rounded_form::rounds_as_root(x)) return {{x.high, start.which}, false};
-    if (x.valid) start.s = x.high;
-    return rounded_by_exact_decision<T>(u, dy, phi, &start);
+    return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
   }
 }
 
@@ -676,9 +599,7 @@ traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
   static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
                                       "long double and float128 only");
   if constexpr (std::is_same_v<T, double>) {
-    if (inside_plain_window(u, dy, phi)) [[likely]] {
-      if (auto fixed = rounded_by_fixed_bound(u, dy, phi)) [[likely]] return *fixed;
-    }
+    if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound(u, dy, phi);
   }
   return solve_rounded_general(u, dy, phi);
 }
