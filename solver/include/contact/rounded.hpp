@@ -266,18 +266,6 @@ bool in_fast_window(const T& x, bool zero_allowed) {
 
 namespace rounded_form {
 
-// Veltkamp's splitting constant 2^ceil(p/2) + 1.
-template <class T>
-T veltkamp_splitter() {
-  if constexpr (std::is_floating_point_v<T>) {
-    return T(1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1;
-  } else {
-    using std::ldexp;
-    static const T splitter = ldexp(T(1), (detail::precision_of<T>() + 1) / 2) + 1;
-    return splitter;
-  }
-}
-
 // a * b = high + low exactly (barring underflow of low), inline: the hardware
 // fma where the target has one, else Dekker's product on Veltkamp's split (a
 // library fma call, on the baseline x86-64 target, is slower than the whole
@@ -287,16 +275,8 @@ template <class T>
 #if defined(__FMA__)
   if constexpr (detail::hardware_binary<T>) return detail::two_prod(a, b);
 #endif
-  const T splitter = veltkamp_splitter<T>();
-  auto split = [&](const T& x) {
-    const T scaled = splitter * x;
-    const T high = scaled - (scaled - x);
-    return detail::exact_pair<T>{high, x - high};
-  };
   const T high = a * b;
-  const auto [a_high, a_low] = split(a);
-  const auto [b_high, b_low] = split(b);
-  return {high, ((a_high * b_high - high) + a_high * b_low + a_low * b_high) + a_low * b_low};
+  return {high, detail::dekker_product_error(a, b, high)};
 }
 
 // s0 (s0 + u), the term (A.30) and (A.32) share: s0 + u = sum.high + sum.low

@@ -15,9 +15,10 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
-#include <utility>
 
 #include <boost/multiprecision/number.hpp>
+
+#include "error_free.hpp"
 
 // Declared, not included: the core solver needs no quadmath header.
 namespace boost::multiprecision::backends {
@@ -296,19 +297,8 @@ T neighbour_by_bits(const T& x, bool up) {
 // with an unbounded exponent either way. A zero factor (or a subnormal,
 // infinite or NaN operand) is outside the range: fma_in_integers answers it.
 [[gnu::always_inline]] inline long double fma_by_odd_rounding(long double a, long double b, long double c) {
-  const long double splitter = 4294967297.0L;  // 2^32 + 1
-  auto split = [splitter](long double x) {
-    const long double scaled = splitter * x, high = scaled - (scaled - x);
-    return std::pair<long double, long double>{high, x - high};
-  };
-  auto two_sum = [](long double x, long double y) {
-    const long double sum = x + y, y_virtual = sum - x, x_virtual = sum - y_virtual;
-    return std::pair<long double, long double>{sum, (x - x_virtual) + (y - y_virtual)};
-  };
   const long double product = a * b;
-  const auto [a_high, a_low] = split(a);
-  const auto [b_high, b_low] = split(b);
-  const long double product_low = ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
+  const long double product_low = dekker_product_error(a, b, product);  // split by 2^32 + 1
   const auto [high, low] = two_sum(c, product);
   auto [tail, tail_error] = two_sum(low, product_low);
   if (tail_error != 0 && (emulated_format<long double>::magnitude_key(tail) & 1) == 0)

@@ -19,6 +19,7 @@
 #include <boost/math/tools/precision.hpp>
 
 #include "emulated_fma.hpp"
+#include "error_free.hpp"
 
 // Declared, not included: the core solver needs no quadmath header.
 namespace boost::multiprecision::backends {
@@ -26,12 +27,6 @@ struct float128_backend;
 }
 
 namespace contact::detail {
-
-// Significand bits of T; for MPFR at run-time precision, the current default.
-template <class T>
-int precision_of() {
-  return boost::math::tools::digits<T>();
-}
 
 // float or double: IEEE binary32 or binary64 in hardware, whose bit patterns
 // the fast paths read and step (std::bit_cast to an unsigned integer of the
@@ -62,20 +57,6 @@ using scalar_of_t = typename scalar_of<T>::type;
 // path steps (clamps) and whose selects need no branch
 template <class T>
 concept binary_bits = hardware_binary<T> || lane_vector<T>;
-
-// a + b == sum + error exactly, barring overflow (Knuth's TwoSum).
-template <class T>
-struct exact_pair {
-  T high, low;
-};
-
-template <class T>
-exact_pair<T> two_sum(const T& a, const T& b) {
-  T sum = a + b;
-  T b_virtual = sum - a;
-  T a_virtual = sum - b_virtual;
-  return {sum, (a - a_virtual) + (b - b_virtual)};
-}
 
 // Whether T's fma rounds once. Boost 1.74's cpp_bin_float computes fma as a
 // product and a sum, rounding twice; it gets Dekker's product instead.
@@ -117,22 +98,7 @@ T product_error(const T& a, const T& b, const T& product) {
   if constexpr (!product_error_by_dekker<T>) {
     return fused_multiply_add(a, b, T(-product));  // the lanes' and scaled<T>'s own too
   } else {
-    const T splitter = [] {
-      if constexpr (std::is_floating_point_v<T>) {
-        return T((1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
-      } else {
-        using std::ldexp;
-        return T(ldexp(T(1), (precision_of<T>() + 1) / 2) + 1);
-      }
-    }();
-    auto split = [&](const T& x) {
-      const T scaled = splitter * x;
-      const T high = scaled - (scaled - x);
-      return exact_pair<T>{high, x - high};
-    };
-    const auto [a_high, a_low] = split(a);
-    const auto [b_high, b_low] = split(b);
-    return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
+    return dekker_product_error(a, b, product);
   }
 }
 

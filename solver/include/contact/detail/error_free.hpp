@@ -1,0 +1,70 @@
+// Error-free transformations, generic over any radix-2 scalar that rounds to
+// nearest: a sum (Knuth's TwoSum) and a product's rounding error (Dekker's
+// product on Veltkamp's split), each exact barring overflow and underflow.
+// One spelling for every caller: float_tools.hpp's product_error where T's fma
+// is slow or not fused, the correctly rounded mode's products, and the x87 fma
+// emulation.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include <boost/math/tools/precision.hpp>
+
+namespace contact::detail {
+
+// Significand bits of T; for MPFR at run-time precision, the current default.
+template <class T>
+int precision_of() {
+  return boost::math::tools::digits<T>();
+}
+
+// a + b == sum + error exactly, barring overflow (Knuth's TwoSum).
+template <class T>
+struct exact_pair {
+  T high, low;
+};
+
+template <class T>
+exact_pair<T> two_sum(const T& a, const T& b) {
+  T sum = a + b;
+  T b_virtual = sum - a;
+  T a_virtual = sum - b_virtual;
+  return {sum, (a - a_virtual) + (b - b_virtual)};
+}
+
+// Veltkamp's splitting constant 2^ceil(p/2) + 1: a constant for the hardware
+// types, computed once for the other IEEE formats (binary128), and per call
+// where the precision is chosen at run time (MPFR).
+template <class T>
+T veltkamp_splitter() {
+  if constexpr (std::is_floating_point_v<T>) {
+    return T((1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1);
+  } else if constexpr (std::numeric_limits<T>::is_iec559) {
+    using std::ldexp;
+    static const T splitter = ldexp(T(1), (precision_of<T>() + 1) / 2) + 1;
+    return splitter;
+  } else {
+    using std::ldexp;
+    return T(ldexp(T(1), (precision_of<T>() + 1) / 2) + 1);
+  }
+}
+
+// a * b - product exactly, for product = a * b rounded to nearest: each factor
+// split into halves of at most p/2 bits, whose partial products are exact.
+// The split overflows within 2^-(p/2) of T's largest value.
+template <class T>
+T dekker_product_error(const T& a, const T& b, const T& product) {
+  const T splitter = veltkamp_splitter<T>();
+  auto split = [&](const T& x) {
+    const T scaled = splitter * x;
+    const T high = scaled - (scaled - x);
+    return exact_pair<T>{high, x - high};
+  };
+  const auto [a_high, a_low] = split(a);
+  const auto [b_high, b_low] = split(b);
+  return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low;
+}
+
+}  // namespace contact::detail
