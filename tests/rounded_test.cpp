@@ -280,10 +280,11 @@ TYPED_TEST(RoundedProperty, InvalidInputGivesNaNAndTheInvalidCase) {
   }
 }
 
-// Inputs inside the plain window whose s0 is not: the exact decision takes over.
-// (A.30) s ~ -u / (1 + phi) below the window, (A.31) s ~ eps dy below it (cancellation
-// beyond p bits), (A.32) s ~ sqrt(phi) dy above it.
-TYPED_TEST(RoundedProperty, StepsOutsideTheWindowGoToTheExactDecision) {
+// Inputs inside the plain window whose s0 is not: the wider type's step takes over
+// where T has one (double), else the exact decision. (A.30) s ~ -u / (1 + phi) below
+// the window, (A.31) s ~ eps dy below it (cancellation beyond p bits), (A.32) s ~
+// sqrt(phi) dy above it.
+TYPED_TEST(RoundedProperty, StepsOutsideTheWindowGoToTheWiderStepOrTheExactDecision) {
   using T = TypeParam;
   using std::ldexp;
   const long w = detail::safe_window<T>::half_width();
@@ -296,7 +297,8 @@ TYPED_TEST(RoundedProperty, StepsOutsideTheWindowGoToTheExactDecision) {
     const auto exact = reference::solve(x[0], x[1], x[2]);
     EXPECT_TRUE(correctly_rounded(traced.result.s, exact, x[0], x[1], x[2])) << x[0] << " " << x[1] << " " << x[2];
     EXPECT_EQ(traced.result.which, exact.which);
-    if constexpr (!std::is_same_v<T, float>) EXPECT_TRUE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
+    if constexpr (!std::is_same_v<T, float>)
+      EXPECT_EQ(traced.exact_decision, std::is_void_v<typename detail::wider_step<T>::type>) << x[0] << " " << x[1] << " " << x[2];
   }
 }
 
@@ -334,6 +336,21 @@ TEST(RoundedExactDecision, WalksFromAFarCandidate) {
   const auto walked = detail::rounded_by_exact_decision(u, dy, phi, &from);
   EXPECT_TRUE(walked.exact_decision);
   EXPECT_TRUE(correctly_rounded(walked.result.s, exact, u, dy, phi));
+}
+
+// Roots beyond the overflow threshold, from the largest double: the walk's first
+// step up reaches infinity (double's own inputs of this kind are decided before,
+// by long double's step).
+TEST(RoundedExactDecision, WalksUpToInfinity) {
+  int overflowing = 0;
+  for (const auto& c : read_hard_cases("range_edges")) {
+    if (!std::isinf(c.s)) continue;
+    ++overflowing;
+    const solution<double> from{std::numeric_limits<double>::max(), c.which};
+    const auto walked = detail::rounded_by_exact_decision(c.u, c.dy, c.phi, &from);
+    EXPECT_EQ(walked.result.s, c.s) << c.line;
+  }
+  EXPECT_GE(overflowing, 5);
 }
 
 // Ties reached after walking: from 5 ulps below and 5 ulps above the tie, the
@@ -521,6 +538,105 @@ TYPED_TEST(RoundedFixedStep, DecidesOrdinaryInputsWithoutTheExactDecision) {
     const auto traced = detail::solve_rounded_traced(x[0], x[1], x[2]);
     EXPECT_FALSE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
     EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(x[0], x[1], x[2]), x[0], x[1], x[2]));
+  }
+}
+
+
+// ---- double beyond its window: the wider type's step ------------------------------
+
+using wide = detail::wider_step<double>::type;
+
+// Where long double is wider than double and its window holds double's range (x87,
+// binary128), double's inputs that its own step cannot take use long double's.
+TEST(RoundedWiderStep, DoubleHasOneWhereLongDoubleIsWider) {
+  if constexpr (std::numeric_limits<long double>::digits > 53 && std::numeric_limits<long double>::max_exponent > 4096)
+    EXPECT_TRUE((std::is_same_v<wide, long double>));
+  else
+    EXPECT_TRUE((std::is_void_v<wide>));
+}
+
+// The rounding test on W's interval, on intervals made to measure: strictly
+// between two midpoints it rounds, touching one it refuses; beyond the largest
+// double the overflow threshold is the midpoint; a zero needs the root's sign.
+TEST(RoundedWiderStep, RoundsOnlyIntervalsStrictlyBetweenMidpoints) {
+  if constexpr (!std::is_void_v<wide>) {
+    using step = rounded_form::fixed_step<wide>;
+    const wide one = 1, ulp = std::numeric_limits<double>::epsilon(), tiny = one / (1ull << 62);
+    const double largest = std::numeric_limits<double>::max();
+    const wide max = largest, threshold = max + (max - wide(detail::next_down(largest))) / 2;
+    const wide least = std::numeric_limits<double>::denorm_min();
+    double rounded = 0;
+    EXPECT_TRUE(detail::rounds_alike_in(step{one + ulp / 4, 0, ulp / 8}, rounded));
+    EXPECT_EQ(rounded, 1.0);
+    EXPECT_FALSE(detail::rounds_alike_in(step{one + ulp / 2, 0, 0}, rounded));           // on the midpoint
+    EXPECT_FALSE(detail::rounds_alike_in(step{one + ulp / 2 - tiny, 0, tiny}, rounded));  // touching it
+    EXPECT_FALSE(detail::rounds_alike_in(step{one - ulp / 4, 0, 0}, rounded));            // below 1 the gap halves
+    EXPECT_TRUE(detail::rounds_alike_in(step{one - ulp / 8, 0, 0}, rounded));
+    EXPECT_EQ(rounded, 1.0);
+    EXPECT_TRUE(detail::rounds_alike_in(step{threshold * (1 - tiny), 0, 0}, rounded));
+    EXPECT_EQ(rounded, largest);
+    EXPECT_FALSE(detail::rounds_alike_in(step{threshold, 0, 0}, rounded));  // a tie, which goes to infinity
+    EXPECT_TRUE(detail::rounds_alike_in(step{threshold * (1 + tiny), 0, 0}, rounded));
+    EXPECT_EQ(rounded, std::numeric_limits<double>::infinity());
+    EXPECT_TRUE(detail::rounds_alike_in(step{-threshold * (1 + tiny), 0, 0}, rounded));
+    EXPECT_EQ(rounded, -std::numeric_limits<double>::infinity());
+    EXPECT_TRUE(detail::rounds_alike_in(step{-threshold * (1 - tiny), 0, 0}, rounded));
+    EXPECT_EQ(rounded, -largest);
+    EXPECT_TRUE(detail::rounds_alike_in(step{least / 4, 0, least / 8}, rounded));
+    EXPECT_TRUE(rounded == 0 && !std::signbit(rounded));
+    EXPECT_TRUE(detail::rounds_alike_in(step{-least / 4, 0, least / 8}, rounded));
+    EXPECT_TRUE(rounded == 0 && std::signbit(rounded));
+    EXPECT_FALSE(detail::rounds_alike_in(step{0, 0, least / 8}, rounded));  // either sign
+    EXPECT_TRUE(detail::rounds_alike_in(step{least * 3 / 4, 0, least / 8}, rounded));
+    EXPECT_EQ(rounded, std::numeric_limits<double>::denorm_min());
+  }
+}
+
+// Inputs of double beyond its plain window, of the kinds the default scenes hold:
+// roots beyond the largest double, roots that round to zero or to subnormals, (A.30)
+// with its roots merged by a huge phi (where s0's own bound decides), and each case
+// across the whole range. All correctly rounded, without the exact decision.
+TEST(RoundedWiderStep, DecidesDoubleBeyondItsWindow) {
+  if constexpr (!std::is_void_v<wide>) {
+    const double inputs[][3] = {
+        {-0x1p1000, 0x1p1000, 0x1p60},                                              // (A.32) beyond the largest double
+        {-0x1.3dbaa455d755fp+1000, 0x1.7p1013, 0x1.2895b0feab1fp+20},               // (A.32) just below it
+        {0x1p-1000, -0x1p-1070, 0x1p500},                                           // (A.30) rounds to -0
+        {0x1.0bb0d908e3ce1p-1000, 0x1p-1060, 0x1p300},                              // (A.31) subnormal root
+        {0x1.586434330bd8dp-837, -0x1.00d38a5b9755dp-929, 0x1.0245bd016e778p+285},  // (A.30) roots merged
+        {0x1.2f65c5dcfe976p+731, -0x1.c383bfa2a2c0cp+684, 0x1.5fc5200b36796p+703},  // (A.30) roots merged
+        {0x1.3e11c018d9ecfp-932, -0x1.4861p-1050, 0x1.17f38143ca2efp+813},          // (A.30) subnormal dy
+        {-0x1.3dbaa455d755fp+542, 0x1.0bb0d908e3ce1p+521, 0x1p-700},                // (A.32) phi below the window
+        {0x1.9e8fe1e522847p+504, 0x1.4052c91825b57p+514, 0x1.432ebdcfc2f7p-12}};    // (A.31) u, dy above the window
+    for (const auto& x : inputs) {
+      const auto traced = detail::solve_rounded_traced(x[0], x[1], x[2]);
+      const auto exact = reference::solve(x[0], x[1], x[2]);
+      EXPECT_FALSE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
+      EXPECT_TRUE(correctly_rounded(traced.result.s, exact, x[0], x[1], x[2])) << x[0] << " " << x[1] << " " << x[2];
+      EXPECT_EQ(traced.result.which, exact.which) << x[0] << " " << x[1] << " " << x[2];
+    }
+  }
+}
+
+// An exact tie moved beyond double's window (homogeneity: u and dy times 2^600
+// move the root, a midpoint, by 2^600) stays a tie, which no interval of W can
+// place on one side: the exact decision decides it, to the even neighbour.
+TEST(RoundedWiderStep, LeavesTiesBeyondTheWindowToTheExactDecision) {
+  if constexpr (!std::is_void_v<wide>) {
+    int moved = 0;
+    for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact"})
+      for (const auto& tie : read_hard_cases(name)) {
+        for (const int shift : {600, -600}) {
+          const double u = std::ldexp(tie.u, shift), dy = std::ldexp(tie.dy, shift), s = std::ldexp(tie.s, shift);
+          if (!std::isnormal(u) || !std::isnormal(dy) || !std::isnormal(s) || detail::inside_plain_window(u, dy, tie.phi))
+            continue;
+          ++moved;
+          const auto traced = detail::solve_rounded_traced(u, dy, tie.phi);
+          EXPECT_TRUE(traced.exact_decision) << tie.line;
+          EXPECT_EQ(traced.result.s, s) << tie.line;
+        }
+      }
+    EXPECT_GE(moved, 30);
   }
 }
 

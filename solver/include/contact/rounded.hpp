@@ -51,16 +51,18 @@ inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && s
 //    rounds as s0 + delta does. In (A.31), where a heavy cancellation widens the
 //    bound beyond that, the signs of R at the candidate's midpoints decide (as
 //    in step 3, but in T).
-// 3. Otherwise, and outside the exponent window where step 1 is proven, the
-//    exact decision: R is strictly increasing, so the root lies above a
-//    midpoint m exactly when R(m) < 0, and on each side of dy the sign of R(m)
-//    is that of a polynomial in m, u, dy and phi whose terms are products of
-//    T values. Each product is an exact expansion (TwoProd on significands),
-//    the terms are scaled<T> (significand and separate exponent, so nothing
-//    under- or overflows for any finite input), and the sign of their sum is
-//    decided exactly (Shewchuk's expansion). An exact zero is a tie, which goes
-//    to the even neighbour. Starting from the best candidate at hand, the walk
-//    moves one T value at a time until the root lies between the two midpoints.
+// 3. Otherwise, and outside the exponent window where step 1 is proven, double
+//    takes steps 1 and 2 in long double where that is wider (wider_step); what
+//    is still undecided takes the exact decision: R is strictly increasing, so
+//    the root lies above a midpoint m exactly when R(m) < 0, and on each side
+//    of dy the sign of R(m) is that of a polynomial in m, u, dy and phi whose
+//    terms are products of T values. Each product is an exact expansion
+//    (TwoProd on significands), the terms are scaled<T> (significand and
+//    separate exponent, so nothing under- or overflows for any finite input),
+//    and the sign of their sum is decided exactly (Shewchuk's expansion). An
+//    exact zero is a tie, which goes to the even neighbour. Starting from the
+//    best candidate at hand, the walk moves one T value at a time until the
+//    root lies between the two midpoints.
 
 namespace detail {
 
@@ -519,26 +521,51 @@ template <class T>
   return {{s, stable.which}, true};
 }
 
-// The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0): the
-// stable path's case decision and its formulas, unclamped (Newton's step needs
-// s0 near the root, not on its side of dy). Where the step's conditions fail, s0
-// leaves the window or the rounding test fails, the exact decision decides, from
-// the best candidate at hand.
+// The case of a valid input and its fixed-bound step: the stable path's case
+// decision and its formulas, unclamped (Newton's step needs s0 near the root, not
+// on its side of dy). Free flight (A.29) is exact and needs no step.
 template <class T>
-traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
+struct cased_step {
   rounded_form::fixed_step<T> step;
   contact_case which;
+};
+
+template <class T>
+cased_step<T> fixed_bound_step(const T& u, const T& dy, const T& phi) {
   if (dy <= 0) {
-    if (u <= -dy) return {{T(-u), contact_case::free}, false};  // (A.29) s = -u, exact
-    step = rounded_form::impact_step(u, dy, phi);
-    which = contact_case::impact;
-  } else if (stays_in_contact<true>(u, dy, phi)) {
-    step = rounded_form::contact_step(u, dy, phi);
-    which = contact_case::contact;
-  } else {
-    step = rounded_form::release_step(u, dy, phi);
-    which = contact_case::release;
+    if (u <= -dy) return {{T(-u), T(0), T(0)}, contact_case::free};  // (A.29) s = -u, exact
+    return {rounded_form::impact_step(u, dy, phi), contact_case::impact};
   }
+  if (stays_in_contact<true>(u, dy, phi)) return {rounded_form::contact_step(u, dy, phi), contact_case::contact};
+  return {rounded_form::release_step(u, dy, phi), contact_case::release};
+}
+
+// The wider type whose step stands in for T's where T's cannot decide: one with
+// proven bounds, a longer significand, and a fast window that holds every finite
+// T with room (x87 long double or binary128, for double). void where there is
+// none (a long double that is double, or double-double): the exact decision.
+template <class T>
+struct wider_step {
+  using type = void;
+};
+template <>
+struct wider_step<double> {
+  using type = std::conditional_t<
+      rounded_form::has_fixed_bounds<long double> && (std::numeric_limits<long double>::digits > 53) &&
+          (window_half_width<long double>(std::numeric_limits<long double>::digits) >= 2 * 1075),
+      long double, void>;
+};
+
+template <class T>
+traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi, const solution<T>* start);
+
+// The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0). Where
+// s0 leaves the window or the rounding test fails, the wider type's step or the
+// exact decision decides, from the best candidate at hand.
+template <class T>
+traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
+  auto [step, which] = fixed_bound_step(u, dy, phi);
+  if (which == contact_case::free) return {{step.s0, which}, false};
   if (in_fast_window(step.s0, false)) [[likely]] {
     T rounded;
     if (rounded_form::rounds_alike(step, rounded)) [[likely]] return {{rounded, which}, false};
@@ -549,7 +576,77 @@ traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi)
     }
   }
   const solution<T> start{step.s0, which};
+  return rounded_beyond_the_step<T>(u, dy, phi, &start);
+}
+
+// T's rounding of the root from W's step: with lo and hi W's rounded ends of the
+// step's interval, the root lies in [lo', hi'] whose roundings in W are lo and hi
+// (rounds_alike), and W's rounding is monotonic and keeps T's midpoints (W has
+// more bits and a wider exponent range), so where lo and hi lie strictly between
+// the midpoints around a T value r, the root does too, and rounds to r. Beyond
+// the largest T the midpoint is the overflow threshold t = max + ulp(max) / 2
+// (the root rounds to infinity from t up); a zero takes the sign of the root,
+// which lo > 0 or hi < 0 tells.
+template <class T, class W>
+bool rounds_alike_in(const rounded_form::fixed_step<W>& step, T& rounded) {
+  using std::isinf;
+  const W lo = step.s0 + (step.delta - step.margin), hi = step.s0 + (step.delta + step.margin);
+  const T max = (std::numeric_limits<T>::max)();
+  const W threshold = W(max) + (W(max) - W(next_down(max))) / 2;
+  rounded = T(hi);
+  if (isinf(rounded)) return rounded > 0 ? lo > threshold : hi < -threshold;
+  if (rounded == 0 && !(lo > 0 || hi < 0)) return false;
+  const W below = rounded == -max ? -threshold : (W(rounded) + W(next_down(rounded))) / 2;
+  const W above = rounded == max ? threshold : (W(rounded) + W(next_up(rounded))) / 2;
+  return below < lo && hi < above;
+}
+
+// x in W, exactly. A subnormal float or double goes through its significand as
+// an integer (scaled<T>::subnormal_as_integer): loading a subnormal operand into
+// the x87 unit costs a microcode assist, longer than W's whole step.
+template <class W, class T>
+W widened(const T& x) {
+  if constexpr (hardware_binary<T>) {
+    using layout = binary_layout<T>;
+    using bits = typename layout::bits;
+    const bits magnitude = std::bit_cast<bits>(x) & ~layout::sign;
+    if (bits(magnitude - 1) < bits(std::bit_cast<bits>(std::numeric_limits<T>::min()) - 1)) [[unlikely]]  // subnormal
+      return W(scaled<T>::subnormal_as_integer(x)) * rounded_form::power_of_two<W, -scaled<T>::least_binade_of_bits>();
+  }
+  return W(x);
+}
+
+// u, dy, phi of T (valid or not) solved by W's step and rounded to T; where W's
+// window does not hold them or the rounding test fails, the exact decision.
+template <class T, class W>
+[[gnu::noinline]] traced_solution<T> rounded_by_wider_step(const T& u, const T& dy, const T& phi) {
+  using std::fabs;
+  const W wide_u = widened<W>(u), wide_dy = widened<W>(dy), wide_phi = widened<W>(phi);
+  if (!(in_fast_window(wide_u, true) && in_fast_window(wide_dy, true) && in_fast_window(wide_phi, true) && !(phi < 0)))
+    return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
+  const auto [step, which] = fixed_bound_step(wide_u, wide_dy, wide_phi);
+  if (which == contact_case::free) return {{T(-u), which}, false};
+  T rounded;
+  W candidate = step.s0;
+  if (in_fast_window(step.s0, false)) [[likely]] {
+    if (rounds_alike_in(step, rounded)) [[likely]] return {{rounded, which}, false};
+    // Where (A.30)'s roots merge (phi large, s near dy), Newton's margin can
+    // exceed s0's own error: at most 3.01 ulps of W at the root in every case
+    // (proofs/claimed_bounds.txt, proven at W's width), so within 2^(3 - p) |s0|.
+    const W stable_margin = rounded_form::power_of_two<W, 3 - std::numeric_limits<W>::digits>() * fabs(step.s0);
+    if (rounds_alike_in(rounded_form::fixed_step<W>{step.s0, W(0), stable_margin}, rounded))
+      return {{rounded, which}, false};
+    candidate += step.delta;
+  }
+  const solution<T> start{T(candidate), which};
   return rounded_by_exact_decision<T>(u, dy, phi, &start);
+}
+
+template <class T>
+traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi, const solution<T>* start) {
+  using W = typename wider_step<T>::type;
+  if constexpr (std::is_void_v<W>) return rounded_by_exact_decision<T>(u, dy, phi, start);
+  else return rounded_by_wider_step<T, W>(u, dy, phi);
 }
 
 // Everything but double's common case, out of line so that its caller stays small.
@@ -563,12 +660,13 @@ template <class T>
     return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
   } else {
     // Outside the window where the Newton step is proven (invalid input
-    // included), or for a type with no proven bound, straight to the exact decision.
+    // included), or for a type with no proven bound, the wider type's step or
+    // the exact decision.
     if constexpr (rounded_form::has_fixed_bounds<T>) {
       if (in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0))
         return rounded_by_fixed_bound(u, dy, phi);
     }
-    return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
+    return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
   }
 }
 

@@ -149,9 +149,6 @@ struct scaled {
     return normalized(detail::square_root(m), (a.exponent + long(odd)) / 2);
   }
 
- private:
-  scaled(const T& m, long e, int) : significand(m), exponent(e) {}
-
   // A subnormal binary32 or binary64 x is k 2^-least_binade_of_bits for the
   // integer k of its significand field, which converts to T exactly (and
   // normal): frexp and ldexp take a slow path on subnormals, and so does any
@@ -165,6 +162,9 @@ struct scaled {
     const bits magnitude = std::bit_cast<bits>(x) & ~binary_layout<T>::sign;
     return std::copysign(T(std::make_signed_t<bits>(magnitude)), x);
   }
+
+ private:
+  scaled(const T& m, long e, int) : significand(m), exponent(e) {}
 };
 
 // TwoSum of two scaled numbers as IEEE arithmetic with an unbounded exponent
