@@ -264,6 +264,13 @@ bool in_fast_window(const T& x, bool zero_allowed) {
   else return safe_window<T>::holds(x);
 }
 
+// A valid input whose u, dy and phi lie in the fast window (zeros included):
+// where the fixed-bound step is proven.
+template <class T>
+bool inputs_in_fast_window(const T& u, const T& dy, const T& phi) {
+  return in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0);
+}
+
 }  // namespace detail
 
 namespace rounded_form {
@@ -454,15 +461,26 @@ fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
   return {s0, T(-q * inverse), power_of_two<T, fixed_bounds_of<T>::release>() * fabs(s0)};
 }
 
-// The root lies in [s0 + delta - margin, s0 + delta + margin], and both ends as
-// rounded here enclose that interval (the margin's constants cover these roundings
-// too); rounding to nearest is monotonic, so when both ends round alike the root
-// rounds so.
+// The root lies in [s0 + delta - margin, s0 + delta + margin]: the ends of that
+// interval, each rounded once from an exact end that encloses it (the margin's
+// constants cover the roundings of delta -+ margin too). Rounding to nearest is
+// monotonic, so the root rounds at or between these two.
+template <class T>
+struct interval_ends {
+  T below, above;
+};
+
+template <class T>
+interval_ends<T> rounded_ends(const fixed_step<T>& step) {
+  return {step.s0 + (step.delta - step.margin), step.s0 + (step.delta + step.margin)};
+}
+
+// When both ends round alike, the root rounds so.
 template <class T>
 bool rounds_alike(const fixed_step<T>& step, T& rounded) {
-  const T below = step.s0 + (step.delta - step.margin);
-  rounded = step.s0 + (step.delta + step.margin);
-  return below == rounded;
+  const auto [below, above] = rounded_ends(step);
+  rounded = above;
+  return below == above;
 }
 
 // float: the stable path's formulas run in double. Their proven bounds
@@ -581,7 +599,7 @@ traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi)
 
 // T's rounding of the root from W's step: with lo and hi W's rounded ends of the
 // step's interval, the root lies in [lo', hi'] whose roundings in W are lo and hi
-// (rounds_alike), and W's rounding is monotonic and keeps T's midpoints (W has
+// (rounded_ends), and W's rounding is monotonic and keeps T's midpoints (W has
 // more bits and a wider exponent range), so where lo and hi lie strictly between
 // the midpoints around a T value r, the root does too, and rounds to r. Beyond
 // the largest T the midpoint is the overflow threshold t = max + ulp(max) / 2
@@ -590,7 +608,7 @@ traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi)
 template <class T, class W>
 bool rounds_alike_in(const rounded_form::fixed_step<W>& step, T& rounded) {
   using std::isinf;
-  const W lo = step.s0 + (step.delta - step.margin), hi = step.s0 + (step.delta + step.margin);
+  const auto [lo, hi] = rounded_form::rounded_ends(step);
   const T max = (std::numeric_limits<T>::max)();
   const W threshold = W(max) + (W(max) - W(next_down(max))) / 2;
   rounded = T(hi);
@@ -607,10 +625,8 @@ bool rounds_alike_in(const rounded_form::fixed_step<W>& step, T& rounded) {
 template <class W, class T>
 W widened(const T& x) {
   if constexpr (hardware_binary<T>) {
-    using layout = binary_layout<T>;
-    using bits = typename layout::bits;
-    const bits magnitude = std::bit_cast<bits>(x) & ~layout::sign;
-    if (bits(magnitude - 1) < bits(std::bit_cast<bits>(std::numeric_limits<T>::min()) - 1)) [[unlikely]]  // subnormal
+    using std::fabs;
+    if (is_positive_subnormal(T(fabs(x)))) [[unlikely]]
       return W(scaled<T>::subnormal_as_integer(x)) * rounded_form::power_of_two<W, -scaled<T>::least_binade_of_bits>();
   }
   return W(x);
@@ -622,8 +638,7 @@ template <class T, class W>
 [[gnu::noinline]] traced_solution<T> rounded_by_wider_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   const W wide_u = widened<W>(u), wide_dy = widened<W>(dy), wide_phi = widened<W>(phi);
-  if (!(in_fast_window(wide_u, true) && in_fast_window(wide_dy, true) && in_fast_window(wide_phi, true) && !(phi < 0)))
-    return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
+  if (!inputs_in_fast_window(wide_u, wide_dy, wide_phi)) return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
   const auto [step, which] = fixed_bound_step(wide_u, wide_dy, wide_phi);
   if (which == contact_case::free) return {{T(-u), which}, false};
   T rounded;
@@ -663,8 +678,7 @@ template <class T>
     // included), or for a type with no proven bound, the wider type's step or
     // the exact decision.
     if constexpr (rounded_form::has_fixed_bounds<T>) {
-      if (in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0))
-        return rounded_by_fixed_bound(u, dy, phi);
+      if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
     }
     return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
   }

@@ -658,7 +658,7 @@ template <bool both_normal, class T>
   const bits offset = bits(shift) << layout::significand_bits;
   const T moved_u = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(u) + offset)) : scaled<T>::shifted(u, shift);
   const T moved_dy = both_normal ? std::bit_cast<T>(bits(std::bit_cast<bits>(dy) + offset)) : scaled<T>::shifted(dy, shift);
-  if (is_subnormal_phi(phi)) [[unlikely]] return moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
+  if (is_positive_subnormal(phi)) [[unlikely]] return moved_subnormal_phi(moved_u, moved_dy, u, dy, phi, shift);
   // a subnormal u or dy would cost the early estimate a microcode assist; the moved ones are normal
   const auto inside = moved_cases<false>(moved_u, moved_dy, phi, both_normal ? u : moved_u, both_normal ? dy : moved_dy);
   if (!inside) [[unlikely]] return moved_exactly(moved_u, moved_dy, u, dy, phi, shift);

@@ -401,12 +401,13 @@ struct normal_factors {
   bool moved;
 };
 
-// phi > 0 subnormal (binary32 or binary64)
+// x > 0 subnormal (binary32 or binary64): one unsigned comparison of the bits;
+// for either sign, pass |x|
 template <class T>
   requires hardware_binary<T>
-bool is_subnormal_phi(const T& phi) {
+bool is_positive_subnormal(const T& x) {
   using bits = typename binary_layout<T>::bits;
-  return bits(std::bit_cast<bits>(phi) - 1) < bits(binary_layout<T>::least_normal - 1);
+  return bits(std::bit_cast<bits>(x) - 1) < bits(binary_layout<T>::least_normal - 1);
 }
 
 // The factors where phi is known to be subnormal (the moved stage's subnormal-phi path).
@@ -430,7 +431,7 @@ normal_factors<T> factors_of(const T& phi, const T& x) {
 template <class T>
 normal_factors<T> normal_factors_of(const T& phi, const T& x) {
   if constexpr (hardware_binary<T>) {
-    const bool subnormal = is_subnormal_phi(phi);
+    const bool subnormal = is_positive_subnormal(phi);
     const auto moved = subnormal_phi_factors(phi, x);
     return {select(subnormal, moved.phi, phi), select(subnormal, moved.x, x), select(subnormal, moved.down, T(1)), subnormal};
   } else {
