@@ -1,4 +1,4 @@
-// The fma emulated for x87 long double (odd rounding, and integers outside
+// The fma emulated for x87 long double (exact parts, and integers outside
 // its range) and binary128 (integers), contact/detail/emulated_fma.hpp,
 // against MPFR's, rounded once in the same format (its precision, exponent
 // range and subnormals): on random operands of every alignment of the product
@@ -114,7 +114,7 @@ struct draws {
   // one of the hard kinds, in turn
   operands<T> hard_operands(int kind) {
     constexpr int p = format<T>::digits;
-    switch (kind % 10) {
+    switch (kind % 11) {
       case 0: {  // cancellation: c within a few ulps of -ab
         const T a = normal(in(-100, 100)), b = normal(in(-100, 100));
         return {a, b, stepped(T(-(a * b)))};
@@ -164,6 +164,15 @@ struct draws {
         const int e = in(-1000, 1000);
         const T b = format<T>::make(coin(), 16383 - in(0, 1), (uint128(1) << (p - 1)) | (bits() & ((uint128(1) << in(1, 40)) - 1)));
         return {format<T>::make(coin(), e - p + 16383, uint128(1) << (p - 1)), T(b * (b > 1 ? 1 : 2)), normal(e)};
+      }
+      case 9: {  // c plus or minus half (or a quarter of) its ulp and a sliver: ab = (1 + 2^-s)(1 - 2^-s) times
+                 // that, whose rounding is the midpoint and whose error breaks the tie either way
+        const int e = in(-1000, 1000), k = in(-100, 100), s = in(p / 2 + 1, p / 2 + 8);
+        const uint128 lead = uint128(1) << (p - 1);
+        const T c = coin() ? format<T>::make(coin(), e + 16383, lead) : normal(e);
+        const T a = format<T>::make(coin(), k + 16383, lead | (uint128(1) << (p - 1 - s)));
+        const T b = format<T>::make(coin(), e - p - in(0, 1) - k - 1 + 16383, (2 * lead - 1) & ~((uint128(1) << (p - s)) - 1));
+        return {a, b, c};
       }
       default: {  // exponents over the whole range: every path, the library's fallbacks included
         auto any = [&] {
@@ -232,7 +241,7 @@ TEST(EmulatedFma, LongDoubleMatchesMpfrOnHardOperands) {
   EXPECT_EQ(mismatches<long double>(100000, [&](long i) { return d.hard_operands(int(i)); }), 0);
 }
 
-// x87 long double takes odd rounding inside its range, the integers outside it:
+// x87 long double takes exact parts inside its range, the integers outside it:
 // the integers alone, on the same random operands
 TEST(EmulatedFma, LongDoubleInIntegersMatchesMpfrOnRandomOperands) {
   if (!detail::emulated_format<long double>::available) GTEST_SKIP() << "long double is not x87's";

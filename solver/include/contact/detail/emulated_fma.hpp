@@ -3,8 +3,8 @@
 // floating-point environment on every call (glibc's fmal for x87 long double,
 // libquadmath's fmaq for binary128), and costs far more than the whole closed
 // form around it: in integer arithmetic (fma_in_integers), and for x87 long
-// double inside a wide range by rounding to odd in x87 arithmetic
-// (fma_by_odd_rounding). The result is the library's, bit for bit: an fma
+// double inside a wide range from error-free sums and products in x87
+// arithmetic (fma_by_exact_parts). The result is the library's, bit for bit: an fma
 // rounded once has one correct answer (tests/emulated_fma_test.cpp holds both
 // to MPFR). Every other type keeps its own fma.
 #pragma once
@@ -276,38 +276,42 @@ T neighbour_by_bits(const T& x, bool up) {
 }
 
 // a * b + c rounded once in x87 arithmetic, for factors with binades in
-// [-4000, 4000] and |c| below 2^8001, by Boldo and Melquiond's emulation
-// ("Emulation of FMA and correctly rounded sums: proved algorithms using
-// rounding to odd", IEEE TC 57(4), 2008): ph + pl = ab exactly (Veltkamp's
-// split by 2^32 + 1 and Dekker's product: no split overflows and no partial
-// product underflows in that range), th + tl = c + ph exactly (TwoSum), y =
-// tl + pl rounded to odd (v, the nearest, stepped to its odd neighbour toward
-// y when v is even and y is not v), and the result th + v rounded once. Why
-// that is ab + c rounded once: if y is a p-bit number, v = y and th + v = ab +
-// c exactly. Otherwise tl != 0, so c + ph was inexact and |th| >= |ph| / 2
-// (Sterbenz: else it were exact), hence |y| <= |tl| + |pl| < 2 ulp(th) and y's
-// ulp g is at most 2^(1 - p) ulp(th); y, a sum of multiples of the least
-// subnormal that is not a p-bit number, is normal. th is a multiple of 2g, and
-// so is every p-bit number and midpoint near ab + c (they lie in th's binade
-// or the one below, so they are multiples of ulp(th) / 4): th + y lies
-// strictly between th + t and th + t + g (t, t + g the neighbours of y), and
-// no rounding boundary lies in that gap, nor on th + v, its odd end, so th + y
-// and th + v round alike. No result here is subnormal unless c + ph
-// cancelled exactly (then v = y), and overflow is decided by the rounding
-// with an unbounded exponent either way. A zero factor (or a subnormal,
-// infinite or NaN operand) is outside the range: fma_in_integers answers it.
-[[gnu::always_inline]] inline long double fma_by_odd_rounding(long double a, long double b, long double c) {
+// [-4000, 4000] and |c| below 2^8001, from error-free parts as in Boldo and
+// Melquiond's emulation ("Emulation of FMA and correctly rounded sums: proved
+// algorithms using rounding to odd", IEEE TC 57(4), 2008), their rounding to
+// odd replaced by a tie test. ph + pl = ab exactly (Veltkamp's split by 2^32 +
+// 1 and Dekker's product: no split overflows and no partial product underflows
+// in that range), th + tl = c + ph exactly (TwoSum), tail + e = tl + pl
+// exactly (TwoSum), r = th + tail rounded. Then ab + c = th + tail + e, and
+// its nearest is r unless th + tail is a rounding boundary (a midpoint) and e
+// != 0, when it is r's neighbour on e's side. Why: if e = 0 that is plain.
+// Otherwise tl != 0, so c + ph was inexact and |th| >= |ph| / 2 (Sterbenz:
+// else it were exact), hence |tail| <= |tl| + |pl| <= 2 ulp(th) and ulp(tail)
+// divides ulp(th) / 4, and so every p-bit number and midpoint near th + tail
+// (they lie in th's binade or the one below: multiples of ulp(th) / 4); th +
+// tail is a multiple of ulp(tail) too, and |e| <= ulp(tail) / 2, so a boundary
+// other than th + tail lies at least ulp(tail) from it, beyond th + tail + e.
+// For the tie test, th + tail = r + d exactly (Fast2Sum, exact for |tail| <=
+// |th|, which holds where e != 0), and th + tail is a midpoint when d != 0 and
+// r + 2d, the neighbour on d's side, lies 2d from r (for |d| below half the
+// gap, r + 2d rounds to r or to that neighbour, neither 2d away). No result
+// here is subnormal unless c + ph cancelled exactly (then e = 0), and none
+// comes near overflow. A zero factor (or a subnormal, infinite or NaN operand)
+// is outside the range: fma_in_integers answers it.
+[[gnu::always_inline]] inline long double fma_by_exact_parts(long double a, long double b, long double c) {
   const long double product = a * b;
   const long double product_low = dekker_product_error(a, b, product);  // split by 2^32 + 1
   const auto [high, low] = two_sum(c, product);
-  auto [tail, tail_error] = two_sum(low, product_low);
-  if (tail_error != 0 && (emulated_format<long double>::magnitude_key(tail) & 1) == 0)
-    tail = neighbour_by_bits(tail, tail_error > 0);
-  return high + tail;
+  const auto [tail, tail_error] = two_sum(low, product_low);
+  const auto [nearest, beyond] = ordered_two_sum(high, tail);
+  const long double neighbour_step = beyond + beyond;
+  if ((nearest + neighbour_step) - nearest == neighbour_step && beyond != 0 && tail_error != 0) [[unlikely]]
+    return (tail_error > 0) == (beyond > 0) ? nearest + neighbour_step : nearest;
+  return nearest;
 }
 
-// a * b + c rounded once, for the types of emulated_format: x87 long double by
-// odd rounding where its range allows, else in integers.
+// a * b + c rounded once, for the types of emulated_format: x87 long double
+// from exact parts where its range allows, else in integers.
 template <class T>
 [[gnu::always_inline]] inline T emulated_fma(const T& a, const T& b, const T& c) {
   if constexpr (std::is_same_v<T, long double>) {
@@ -315,7 +319,7 @@ template <class T>
     constexpr unsigned lowest = wide_bias - 4000, factor_span = 8000, c_highest = wide_bias + 8000;
     if ((format::exponent_field(a) - lowest <= factor_span) & (format::exponent_field(b) - lowest <= factor_span) &
         (format::exponent_field(c) <= c_highest)) [[likely]]
-      return fma_by_odd_rounding(a, b, c);
+      return fma_by_exact_parts(a, b, c);
   }
   return fma_in_integers(a, b, c);
 }

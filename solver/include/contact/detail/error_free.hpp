@@ -1,5 +1,5 @@
 // Error-free transformations, generic over any radix-2 scalar that rounds to
-// nearest: a sum (Knuth's TwoSum) and a product's rounding error (Dekker's
+// nearest: a sum (Knuth's TwoSum, Dekker's Fast2Sum) and a product's rounding error (Dekker's
 // product on Veltkamp's split), each exact barring overflow and underflow.
 // One spelling for every caller: float_tools.hpp's product_error where T's fma
 // is slow or not fused, the correctly rounded mode's products, and the x87 fma
@@ -32,6 +32,14 @@ exact_pair<T> two_sum(const T& a, const T& b) {
   T b_virtual = sum - a;
   T a_virtual = sum - b_virtual;
   return {sum, (a - a_virtual) + (b - b_virtual)};
+}
+
+// a + b == sum + error exactly, for |a| >= |b| (or a zero), barring overflow
+// (Dekker's Fast2Sum: three operations where TwoSum takes six).
+template <class T>
+exact_pair<T> ordered_two_sum(const T& a, const T& b) {
+  T sum = a + b;
+  return {sum, b - (sum - a)};
 }
 
 // Veltkamp's splitting constant 2^ceil(p/2) + 1: a constant for the hardware
