@@ -1,7 +1,8 @@
 // contact::solve_batch gives exactly what the scalar stable path gives: the
 // same s, bit for bit, and the same case, for every lane, on every kernel the
 // library holds that this CPU runs (contact::batch_targets; "scalar" is the
-// path of CPUs without fma). Each test runs every such kernel.
+// path of CPUs without fma). Each test runs every such kernel. The RoundedBatch
+// tests hold contact::solve_rounded_batch to solve_rounded likewise.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -100,10 +101,18 @@ bool identical(T a, T b) {
 template <class T>
 using kernel = std::ptrdiff_t (*)(const T*, const T*, const T*, T*, int*, std::ptrdiff_t);
 
+// solve_batch against solve_stable, or solve_rounded_batch against solve_rounded
+enum class mode { stable, rounded };
+
 template <class T>
-kernel<T> kernel_of(const contact::batch_target& target) {
-  if constexpr (std::is_same_v<T, double>) return target.solve_double;
-  else return target.solve_float;
+kernel<T> kernel_of(const contact::batch_target& target, mode m) {
+  if constexpr (std::is_same_v<T, double>) return m == mode::stable ? target.solve_double : target.solve_rounded_double;
+  else return m == mode::stable ? target.solve_float : target.solve_rounded_float;
+}
+
+template <class T>
+solution_of<T> scalar_solution(mode m, T u, T dy, T phi) {
+  return m == mode::stable ? contact::solve_stable(u, dy, phi) : contact::solve_rounded(u, dy, phi);
 }
 
 // The kernels this CPU runs, printed once, so that a run says which it tested.
@@ -121,24 +130,24 @@ std::vector<contact::batch_target> runnable_targets() {
   return runnable;
 }
 
-// Every runnable kernel gives solve_stable's answer on every lane; returns,
-// per kernel, how many lanes it left to solve_stable.
+// Every runnable kernel gives the scalar path's answer on every lane; returns,
+// per kernel, how many lanes it left to the scalar path.
 template <class T>
-std::vector<std::ptrdiff_t> expect_same_as_scalar(const lanes<T>& in) {
+std::vector<std::ptrdiff_t> expect_same_as_scalar(const lanes<T>& in, mode m = mode::stable) {
   const auto n = static_cast<std::ptrdiff_t>(in.u.size());
   std::vector<solution_of<T>> scalar;
   scalar.reserve(in.u.size());
-  for (std::ptrdiff_t i = 0; i < n; ++i) scalar.push_back(contact::solve_stable(in.u[i], in.dy[i], in.phi[i]));
+  for (std::ptrdiff_t i = 0; i < n; ++i) scalar.push_back(scalar_solution(m, in.u[i], in.dy[i], in.phi[i]));
   std::vector<std::ptrdiff_t> left_to_scalar;
   for (const auto& target : runnable_targets()) {
     std::vector<T> s(in.u.size());
     std::vector<int> which(in.u.size());
-    left_to_scalar.push_back(kernel_of<T>(target)(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n));
+    left_to_scalar.push_back(kernel_of<T>(target, m)(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n));
     long mismatches = 0;
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       if (!identical(scalar[i].s, s[i]) || static_cast<int>(scalar[i].which) != which[i]) {
         if (++mismatches <= 10)
-          ADD_FAILURE() << target.name << std::hexfloat << ": u=" << in.u[i] << " dy=" << in.dy[i] << " phi=" << in.phi[i]
+          ADD_FAILURE() << target.name << (m == mode::rounded ? " rounded" : "") << std::hexfloat << ": u=" << in.u[i] << " dy=" << in.dy[i] << " phi=" << in.phi[i]
                         << ": batch s=" << s[i] << " case " << which[i] << ", scalar s=" << scalar[i].s << " case "
                         << static_cast<int>(scalar[i].which);
       }
@@ -174,22 +183,28 @@ TEST(Batch, TheTestInputsHoldEveryCaseAndMostlyVectorLanes) {
   EXPECT_GT(inside, 70000);
 }
 
-TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) {
+// The Eigen form of each mode, on arrays of lengths around the vectors' and blocks'.
+void expect_eigen_arrays_equal_scalar(mode m, std::uint64_t seed) {
   for (long n : {0L, 1L, 7L, 255L, 256L, 257L, 1000L}) {
-    const auto in = inputs<double>(static_cast<std::size_t>(n), 10 + static_cast<std::uint64_t>(n));
+    const auto in = inputs<double>(static_cast<std::size_t>(n), seed + static_cast<std::uint64_t>(n));
     contact::batch_array<double> u(n), dy(n), phi(n), s;
     contact::batch_array<int> which;
     for (long i = 0; i < n; ++i) u[i] = in.u[i], dy[i] = in.dy[i], phi[i] = in.phi[i];
-    contact::solve_batch(u, dy, phi, s, which);
+    if (m == mode::stable)
+      contact::solve_batch(u, dy, phi, s, which);
+    else
+      contact::solve_rounded_batch(u, dy, phi, s, which);
     ASSERT_EQ(s.size(), n);
     ASSERT_EQ(which.size(), n);
     for (long i = 0; i < n; ++i) {
-      const auto scalar = contact::solve_stable(in.u[i], in.dy[i], in.phi[i]);
+      const auto scalar = scalar_solution(m, in.u[i], in.dy[i], in.phi[i]);
       EXPECT_TRUE(identical(scalar.s, s[i]));
       EXPECT_EQ(static_cast<int>(scalar.which), which[i]);
     }
   }
 }
+
+TEST(Batch, EigenArraysOfAnyLengthEqualScalarStable) { expect_eigen_arrays_equal_scalar(mode::stable, 10); }
 
 TEST(Batch, FloatEigenArraysEqualScalarStable) {
   const auto in = inputs<float>(1000, 12);
@@ -442,16 +457,94 @@ TEST(Batch, TopOfRangeLanesEqualScalarStable) {
   expect_same_as_scalar(top_of_range_lanes<float>());
 }
 
-TEST(Batch, LongDoubleLanesEqualScalarStable) {
-  const auto in = inputs<long double>(2000, 4);
-  std::vector<long double> s(in.u.size());
+// The public call (solve_batch or solve_rounded_batch: the kernel dispatch
+// chose, or the scalar path lane by lane for the types without one).
+template <class T>
+void expect_the_call_equals_scalar(const lanes<T>& in, mode m) {
+  std::vector<T> s(in.u.size());
   std::vector<int> which(in.u.size());
-  contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), std::ptrdiff_t(in.u.size()));
+  const auto n = static_cast<std::ptrdiff_t>(in.u.size());
+  if (m == mode::stable)
+    contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n);
+  else
+    contact::solve_rounded_batch(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n);
   for (std::size_t i = 0; i < in.u.size(); ++i) {
-    const auto scalar = contact::solve_stable(in.u[i], in.dy[i], in.phi[i]);
+    const auto scalar = scalar_solution(m, in.u[i], in.dy[i], in.phi[i]);
     EXPECT_TRUE(identical(scalar.s, s[i]));
     EXPECT_EQ(static_cast<int>(scalar.which), which[i]);
   }
+}
+
+TEST(Batch, LongDoubleLanesEqualScalarStable) { expect_the_call_equals_scalar(inputs<long double>(2000, 4), mode::stable); }
+
+// ---- solve_rounded_batch ---------------------------------------------------------
+
+// How many lanes each vector kernel left to the scalar path, below `most`.
+void expect_few_left(const std::vector<std::ptrdiff_t>& left, long most, const char* what) {
+  const auto targets = runnable_targets();
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    if (std::string(targets[k].name) != "scalar") EXPECT_LT(left[k], most) << targets[k].name << ", " << what;
+}
+
+TEST(RoundedBatch, DoubleLanesEqualScalarRoundedBitForBit) { expect_same_as_scalar(inputs<double>(200000, 61), mode::rounded); }
+
+TEST(RoundedBatch, FloatLanesEqualScalarRoundedBitForBit) { expect_same_as_scalar(inputs<float>(50000, 62), mode::rounded); }
+
+// Physical inputs lie in the plain window, where the fixed-bound step decides
+// all but a few lanes (proofs/rounded_bounds.txt: the margins are of order
+// 2^-96 |s|): the vectors answer them.
+TEST(RoundedBatch, PhysicalLanesEqualScalarRoundedAndStayInVectors) {
+  const auto in = inputs<double>(100000, 63, true);
+  expect_few_left(expect_same_as_scalar(in, mode::rounded), 100, "physical");
+}
+
+// The vectors take only the lanes inside the common window: phi's band would
+// move the others' u and dy beyond the plain window, where the step's bounds
+// are not proven, so solve_rounded takes every such lane that is not free flight.
+TEST(RoundedBatch, LanesOutsideTheCommonWindowGoToScalarRounded) {
+  const auto in = band_inputs<double>(64, 50);
+  long outside = 0;
+  for (std::size_t i = 0; i < in.u.size(); ++i)
+    outside += !contact::detail::inside_common_window(in.u[i], in.dy[i], in.phi[i]) &&
+               contact::solve_stable(in.u[i], in.dy[i], in.phi[i]).which != contact::contact_case::free;
+  const auto left = expect_same_as_scalar(in, mode::rounded);
+  const auto targets = runnable_targets();
+  for (std::size_t k = 0; k < targets.size(); ++k) EXPECT_GE(left[k], outside) << targets[k].name;
+  EXPECT_GT(outside, static_cast<long>(in.u.size()) / 2);
+}
+
+TEST(RoundedBatch, LanesNearBothBoundariesEqualScalarRounded) {
+  expect_same_as_scalar(near_the_contact_boundary(65, 20000), mode::rounded);
+  lanes<double> in;
+  harness::seeded_source source(66);
+  using harness::distribution;
+  const distribution dy_wide{distribution::shape::log10, -10, 2, 1}, phi_wide{distribution::shape::log10, -3, 12, 1};
+  for (int k = 0; k < 20000; ++k) {
+    const auto x = harness::free_impact_boundary<double>(source, dy_wide, phi_wide, 4);
+    in.add(x.u, x.dy, x.phi);
+  }
+  expect_same_as_scalar(in, mode::rounded);
+}
+
+TEST(RoundedBatch, FarExtremeAndTopOfRangeLanesEqualScalarRounded) {
+  expect_same_as_scalar(far_and_extreme_lanes<double>(67, 50000), mode::rounded);
+  expect_same_as_scalar(top_of_range_lanes<double>(), mode::rounded);
+  expect_same_as_scalar(top_of_range_lanes<float>(), mode::rounded);
+}
+
+TEST(RoundedBatch, MillionsOfDoubleLanesOfEveryKindEqualScalarRounded) {
+  for (std::uint64_t seed = 70; seed < 72; ++seed) expect_same_as_scalar(lanes_of_every_kind<double>(1000000, seed), mode::rounded);
+}
+
+TEST(RoundedBatch, LongDoubleLanesEqualScalarRounded) {
+  expect_the_call_equals_scalar(inputs<long double>(2000, 68), mode::rounded);
+}
+
+TEST(RoundedBatch, EigenArraysOfAnyLengthEqualScalarRounded) { expect_eigen_arrays_equal_scalar(mode::rounded, 80); }
+
+TEST(RoundedBatch, TheDispatchedKernelEqualsScalarRoundedInDoubleAndFloat) {
+  expect_the_call_equals_scalar(inputs<double>(5000, 69), mode::rounded);
+  expect_the_call_equals_scalar(inputs<float>(5000, 70), mode::rounded);
 }
 
 TEST(Batch, ScalarIsAlwaysAKernelAndTheLastOne) {

@@ -10,6 +10,7 @@ namespace report {
 std::string name_of(method m) {
   switch (m) {
     case method::batch: return "batch";
+    case method::rounded_batch: return "rounded_batch";
     case method::boost_quadratic: return "boost_quadratic";
     case method::eigen_companion: return "eigen_companion";
     case method::boost_newton: return "boost_newton";

@@ -1,5 +1,5 @@
 // The algorithms of the report's tables: the library's four
-// (contact::algorithm), its batch API, two quadratic peers (peers.hpp) and
+// (contact::algorithm), its batch API (stable and rounded), two quadratic peers (peers.hpp) and
 // four iterative peers (iterative_peers.hpp). The switches on method name
 // every one and have no default (-Werror=switch: a new one must be placed).
 #pragma once
@@ -20,6 +20,7 @@ enum class method {
   newton,
   rounded,
   batch,
+  rounded_batch,
   boost_quadratic,
   eigen_companion,
   boost_newton,
@@ -28,7 +29,8 @@ enum class method {
   practitioner_newton
 };
 inline constexpr method all_methods[] = {method::textbook,        method::stable,          method::newton,
-                                         method::rounded,         method::batch,           method::boost_quadratic, method::eigen_companion,
+                                         method::rounded,         method::batch,           method::rounded_batch,
+                                         method::boost_quadratic, method::eigen_companion,
                                          method::boost_newton,    method::boost_halley,    method::boost_toms748,
                                          method::practitioner_newton};
 
@@ -40,6 +42,7 @@ constexpr std::optional<contact::algorithm> library_algorithm(method m) {
     case method::newton: return contact::algorithm::newton;
     case method::rounded: return contact::algorithm::rounded;
     case method::batch:
+    case method::rounded_batch:
     case method::boost_quadratic:
     case method::eigen_companion:
     case method::boost_newton:
@@ -62,6 +65,7 @@ constexpr bool iterative(method m) {
     case method::stable:
     case method::rounded:
     case method::batch:
+    case method::rounded_batch:
     case method::boost_quadratic:
     case method::eigen_companion: break;
   }
@@ -77,13 +81,13 @@ std::optional<method> method_named(std::string_view name);
 template <class T>
 constexpr bool runs_in(method m) {
   if (m == method::eigen_companion) return std::is_floating_point_v<T>;
-  if (m == method::rounded) return contact::rounded_available<T>;
+  if (m == method::rounded || m == method::rounded_batch) return contact::rounded_available<T>;
   return true;
 }
 
 // Whether `m` promises complementarity only weakly: the correctly rounded root
 // may be dy itself where the exact root lies within half an ulp of it.
-constexpr bool weakly_complementary(method m) { return m == method::rounded; }
+constexpr bool weakly_complementary(method m) { return m == method::rounded || m == method::rounded_batch; }
 
 // Why `m` cannot run in the registered type named `type` (contact/types.hpp),
 // or empty if it can; a name the registry does not hold throws std::invalid_argument.

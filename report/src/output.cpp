@@ -106,9 +106,9 @@ std::vector<std::pair<std::string, std::string>> rows_of(const scene_result& r) 
       for (method m : x.methods) {
         std::pair<std::string, std::string> row{type, name_of(m)};
         if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
-        if (m != method::batch) continue;
-        for (const auto& t : r.timing)  // each target's kernel alone, after batch
-          if (t.type == type && is_batch_target_row(t.algorithm) &&
+        if (m != method::batch && m != method::rounded_batch) continue;
+        for (const auto& t : r.timing)  // each target's kernel alone, after batch and rounded_batch
+          if (t.type == type && is_target_row_of(name_of(m), t.algorithm) &&
               std::find(rows.begin(), rows.end(), std::pair{t.type, t.algorithm}) == rows.end())
             rows.emplace_back(t.type, t.algorithm);
       }
@@ -161,16 +161,16 @@ std::string plot_link(const std::string& name, const std::vector<std::string>& m
   return "![" + caption + "](plots/" + name + ".png)\n\n[" + caption + " (SVG)](plots/" + name + ".svg)\n\n";
 }
 
-// `algorithms` with, after batch, the batch[NAME] rows timed in double in some scene.
+// `algorithms` with, after batch and rounded_batch, their [NAME] rows timed in double in some scene.
 std::vector<std::string> with_batch_targets(const std::vector<std::string>& algorithms,
                                             const std::vector<const scene_result*>& scenes) {
   std::vector<std::string> out;
   for (const auto& algorithm : algorithms) {
     out.push_back(algorithm);
-    if (algorithm != name_of(method::batch)) continue;
+    if (algorithm != name_of(method::batch) && algorithm != name_of(method::rounded_batch)) continue;
     for (const auto* r : scenes)
       for (const auto& t : r->timing)
-        if (t.type == double_type && is_batch_target_row(t.algorithm) &&
+        if (t.type == double_type && is_target_row_of(algorithm, t.algorithm) &&
             std::find(out.begin(), out.end(), t.algorithm) == out.end())
           out.push_back(t.algorithm);
   }
@@ -522,7 +522,10 @@ void write_method(std::ostream& md, const run_info& info) {
         "stable's bit for bit (tested), on the target dispatch chose; **batch[NAME]** is the batch kernel of target "
         "NAME alone (`contact::batch_targets()`), timed for every target this CPU supports, in float and double. "
         "Every target gives batch's results bit for bit (tested), so the batch[NAME] rows have timings and no "
-        "accuracy figures of their own.\n"
+        "accuracy figures of their own. **rounded_batch** is `contact::solve_rounded_batch`, whose results equal "
+        "rounded's bit for bit (tested): in double the vectors take the inputs inside the common window and "
+        "solve_rounded the rest; in float it is solve_rounded lane by lane; **rounded_batch[NAME]** is its kernel "
+        "of target NAME alone, in double.\n"
         "- **Types.** The registered scalar types of `contact/types.hpp` ("
      << join(contact::type_names)
      << "); each scene says which algorithms run in which of them, "

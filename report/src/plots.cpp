@@ -34,6 +34,7 @@ const char* colour_of_method(method m) {
     case method::newton: return "#2ca02c";               // green
     case method::rounded: return "#9467bd";              // purple
     case method::batch: return "#17becf";                // cyan; its targets are darker cyans
+    case method::rounded_batch: return "#c5b0d5";        // light purple
     case method::boost_quadratic: return "#ff7f0e";      // orange
     case method::eigen_companion: return "#8c564b";      // brown
     case method::boost_newton: return "#e377c2";         // pink
@@ -75,13 +76,14 @@ constexpr type_marker type_markers[] = {
 
 std::string colour_of(std::string_view algorithm) {
   if (const auto m = method_named(algorithm)) return colour_of_method(*m);
-  const std::string batch = colour_of_method(method::batch);
-  if (is_batch_target_row(algorithm)) {
+  for (method kernel : {method::batch, method::rounded_batch}) {  // its targets: darker shades of its colour
+    const std::string base = colour_of_method(kernel);
+    if (!is_target_row_of(name_of(kernel), algorithm)) continue;
     const auto targets = contact::batch_targets();
     for (std::size_t i = 0; i < targets.size(); ++i)
-      if (algorithm == "batch[" + std::string(targets[i].name) + "]")
-        return darker(batch, 0.25 + 0.5 * double(i) / double(std::max<std::size_t>(1, targets.size() - 1)));
-    return darker(batch, 0.9);
+      if (algorithm == target_row_name(name_of(kernel), targets[i]))
+        return darker(base, 0.25 + 0.5 * double(i) / double(std::max<std::size_t>(1, targets.size() - 1)));
+    return darker(base, 0.9);
   }
   return further_colours[std::hash<std::string_view>{}(algorithm) % std::size(further_colours)];
 }

@@ -47,6 +47,14 @@ contact::solution<T> solve_one(method m, const T& u, const T& dy, const T& phi) 
       contact::solve_batch(&u, &dy, &phi, &s, &which, 1);
       return {s, static_cast<contact::contact_case>(which)};
     }
+    case method::rounded_batch:
+      if constexpr (runs_in<T>(method::rounded_batch)) {
+        T s;
+        int which;
+        contact::solve_rounded_batch(&u, &dy, &phi, &s, &which, 1);
+        return {s, static_cast<contact::contact_case>(which)};
+      }
+      break;
     case method::boost_quadratic: return peers::solve_boost(u, dy, phi);
     case method::eigen_companion:
       if constexpr (runs_in<T>(method::eigen_companion)) return peers::solve_eigen(u, dy, phi);
@@ -134,7 +142,7 @@ struct solved {
   long slow_path = 0;           // rounded: how many took the exact decision
 };
 
-// Every input solved by `m`; batch in one call, as its users call it.
+// Every input solved by `m`; batch and rounded_batch in one call, as their users call them.
 template <class T>
 solved<T> solve_all(method m, const columns<T>& in) {
   const std::size_t n = in.size();
@@ -143,6 +151,13 @@ solved<T> solve_all(method m, const columns<T>& in) {
     contact::solve_batch(in.u.data(), in.dy.data(), in.phi.data(), out.s.data(), out.which.data(),
                          static_cast<std::ptrdiff_t>(n));
     return out;
+  }
+  if constexpr (runs_in<T>(method::rounded_batch)) {
+    if (m == method::rounded_batch) {
+      contact::solve_rounded_batch(in.u.data(), in.dy.data(), in.phi.data(), out.s.data(), out.which.data(),
+                                   static_cast<std::ptrdiff_t>(n));
+      return out;
+    }
   }
   if constexpr (contact::rounded_available<T>) {
     if (m == method::rounded) {  // the same answers as solve_one gives, with the path each took
@@ -231,21 +246,24 @@ void accuracy(const run& r, const std::vector<input>& inputs, const reference_li
 
 // A row of a scene's timings: a method, or one target's batch kernel alone.
 struct timed_row {
-  std::string name;  // name_of(m), or batch_row_name(*target)
+  std::string name;  // name_of(m), or target_row_name(name_of(m), *target)
   method m;
   const contact::batch_target* target = nullptr;
 };
 
 // The rows a run times in T: each method of the run and, after batch in float
-// and double, each target's kernel that this CPU runs (targets.hpp).
+// and double and after rounded_batch in double (float's runs solve_rounded
+// lane by lane on every target), each target's kernel that this CPU runs
+// (targets.hpp).
 template <class T>
 std::vector<timed_row> timed_rows(const run& r) {
   std::vector<timed_row> rows;
   for (method m : r.methods) {
     rows.push_back({name_of(m), m});
     if constexpr (has_batch_kernels<T>)
-      if (m == method::batch)
-        for (const contact::batch_target* t : supported_batch_targets()) rows.push_back({batch_row_name(*t), m, t});
+      if (m == method::batch || (m == method::rounded_batch && std::is_same_v<T, double>))
+        for (const contact::batch_target* t : supported_batch_targets())
+          rows.push_back({target_row_name(name_of(m), *t), m, t});
   }
   return rows;
 }
@@ -284,12 +302,19 @@ std::vector<std::string> register_timings(const run& r, const std::vector<input>
       benchmark::internal::Benchmark* b = nullptr;
       if (row.target) {
         if constexpr (has_batch_kernels<T>)
-          b = whole_array(name, [t = row.target](const T* u, const T* dy, const T* phi, T* s, int* which,
-                                                 std::ptrdiff_t count) { solve_on(*t, u, dy, phi, s, which, count); });
+          b = whole_array(name, [t = row.target, rounded = row.m == method::rounded_batch](
+                                    const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t count) {
+            solve_on(*t, u, dy, phi, s, which, count, rounded);
+          });
       } else if (row.m == method::batch) {
         b = whole_array(name, [](const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t count) {
           contact::solve_batch(u, dy, phi, s, which, count);
         });
+      } else if (row.m == method::rounded_batch) {
+        if constexpr (runs_in<T>(method::rounded_batch))
+          b = whole_array(name, [](const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t count) {
+            contact::solve_rounded_batch(u, dy, phi, s, which, count);
+          });
       } else {
         b = benchmark::RegisterBenchmark(name.c_str(), [data, n, m = row.m](benchmark::State& state) {
           for (auto _ : state) {

@@ -32,7 +32,10 @@ TEST(plots, each_algorithm_of_the_registry_and_each_batch_target_has_a_colour_of
   std::map<std::string, std::string> owner;  // colour -> algorithm
   std::vector<std::string> names;
   for (report::method m : report::all_methods) names.push_back(report::name_of(m));
-  for (const contact::batch_target& t : contact::batch_targets()) names.push_back(report::batch_row_name(t));
+  for (const contact::batch_target& t : contact::batch_targets()) {
+    names.push_back(report::batch_row_name(t));
+    names.push_back(report::target_row_name("rounded_batch", t));
+  }
   EXPECT_GE(names.size(), std::size(report::all_methods) + 1);  // at least the scalar target
   for (const auto& name : names) {
     const std::string colour = report::colour_of(name);

@@ -22,15 +22,19 @@ namespace batch_kernels {
 #endif
 
 CONTACT_SCALAR_CLONES void solve_stable_lane(double u, double dy, double phi, double& s, int& which) {
-  const solution<double> r = solve_stable(u, dy, phi);
-  s = r.s;
-  which = static_cast<int>(r.which);
+  batch_detail::store(solve_stable(u, dy, phi), s, which);
 }
 
 CONTACT_SCALAR_CLONES void solve_stable_lane(float u, float dy, float phi, float& s, int& which) {
-  const solution<float> r = solve_stable(u, dy, phi);
-  s = r.s;
-  which = static_cast<int>(r.which);
+  batch_detail::store(solve_stable(u, dy, phi), s, which);
+}
+
+CONTACT_SCALAR_CLONES void solve_rounded_lane(double u, double dy, double phi, double& s, int& which) {
+  batch_detail::store(solve_rounded(u, dy, phi), s, which);
+}
+
+CONTACT_SCALAR_CLONES void solve_rounded_lane(float u, float dy, float phi, float& s, int& which) {
+  batch_detail::store(solve_rounded(u, dy, phi), s, which);
 }
 
 }  // namespace batch_kernels
@@ -43,10 +47,12 @@ const auto& all_targets() {
   static const std::array targets{
 #define CONTACT_BATCH_KERNEL(name)                                                                                 \
   batch_target{#name, cpu_runs(batch_kernels::name::highway_target()), &batch_kernels::name::solve_double, \
-               &batch_kernels::name::solve_float},
+               &batch_kernels::name::solve_float, &batch_kernels::name::solve_rounded_double,             \
+               &batch_kernels::solve_rounded_lanes<float>},
 #include "batch_kernels.inc"
 #undef CONTACT_BATCH_KERNEL
-      batch_target{"scalar", true, &batch_kernels::solve_stable_lanes<double>, &batch_kernels::solve_stable_lanes<float>}};
+      batch_target{"scalar", true, &batch_kernels::solve_stable_lanes<double>, &batch_kernels::solve_stable_lanes<float>,
+                   &batch_kernels::solve_rounded_lanes<double>, &batch_kernels::solve_rounded_lanes<float>}};
   return targets;
 }
 
@@ -72,6 +78,14 @@ void solve_chosen(const double* u, const double* dy, const double* phi, double* 
 
 void solve_chosen(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
   chosen_batch_target().solve_float(u, dy, phi, s, which, n);
+}
+
+void solve_rounded_chosen(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n) {
+  chosen_batch_target().solve_rounded_double(u, dy, phi, s, which, n);
+}
+
+void solve_rounded_chosen(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
+  chosen_batch_target().solve_rounded_float(u, dy, phi, s, which, n);
 }
 
 }  // namespace batch_detail

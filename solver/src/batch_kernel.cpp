@@ -25,6 +25,7 @@
 #include <type_traits>
 
 #include "batch_kernels.hpp"
+#include "contact/rounded.hpp"
 #include "contact/stable.hpp"
 
 namespace contact::batch_kernels::CONTACT_BATCH_KERNEL_NAME {
@@ -424,10 +425,12 @@ inline constexpr auto compaction_orders = [] {
 
 // Appends the lanes of `lanes_of` to `into`, in order.
 // A block's lanes as the first pass sorts them: by case, and by whether phi
-// is subnormal (double: the first band), and those left to solve_stable.
+// is subnormal (double: the first band), and those left to solve_stable. In
+// the rounded mode, whose steps share no square root, roots holds the impacts
+// and releases the releases.
 template <class T>
 struct sorted_lanes {
-  packed_lanes<T> roots, contacts, roots_of_subnormal_phi, contacts_of_subnormal_phi, scalar;
+  packed_lanes<T> roots, releases, contacts, roots_of_subnormal_phi, contacts_of_subnormal_phi, scalar;
   packed_lanes<T> far_impacts, far_contacts, far_releases;  // u and dy too far apart for the band, unmoved
 };
 
@@ -532,6 +535,47 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return detail::contact_clamped(lanes<D>(contact.numerator / contact.denominator), dy);
 }
 
+// ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
+//
+// The lanes inside the fast window take solve_rounded's fixed-bound step
+// (rounded_form's steps, on lanes) and its rounding test; the root rounds as
+// both ends of the step's interval round. A lane whose test fails, or whose
+// operands or s0 leave the window, gets NaN: solve_rounded decides it.
+
+// x normal (not zero) inside the plain window: detail::magnitude_inside_plain_window
+template <class D>
+HWY_INLINE hn::Mask<D> inside_plain_window(D d, lanes<D> x) {
+  using window = detail::plain_window_bits<hn::TFromD<D>>;
+  const hn::RebindToUnsigned<D> du;
+  const auto offset = hn::Sub(hn::BitCast(du, hn::Abs(x.v)), hn::Set(du, window::lowest));
+  return hn::RebindMask(d, unsigned_less(du, offset, hn::Set(du, window::span + 1)));
+}
+
+// (the first pass packs for these only lanes inside the common window, which
+// lies inside the plain window)
+template <class D>
+HWY_INLINE lanes<D> rounded_or_undecided(D d, const rounded_form::fixed_step<lanes<D>>& step) {
+  const auto [below, above] = rounded_form::rounded_ends(step);
+  const auto decided = hn::And(inside_plain_window(d, step.s0), hn::Eq(below.v, above.v));
+  return hn::IfThenElse(decided, above.v, hn::Set(d, std::numeric_limits<hn::TFromD<D>>::quiet_NaN()));
+}
+
+// (A.30), (A.31), (A.32), each on a pack of its own
+template <class D>
+HWY_INLINE lanes<D> rounded_impacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  return rounded_or_undecided(D(), rounded_form::impact_step(u, dy, phi));
+}
+
+template <class D>
+HWY_INLINE lanes<D> rounded_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  return rounded_or_undecided(D(), rounded_form::contact_step(u, dy, phi));
+}
+
+template <class D>
+HWY_INLINE lanes<D> rounded_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  return rounded_or_undecided(D(), rounded_form::release_step(u, dy, phi));
+}
+
 // The exact stage (detail::stage::exact) of the lanes too far apart for the
 // band, each case on scaled_lanes; a lane scaled_lanes did not carry, or a
 // release root that rounds to infinity below 2^(max_exponent + 2) (only the
@@ -572,11 +616,19 @@ HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
 }
 
+// The scalar path of each mode, for the lanes the vectors leave.
+template <bool rounded_mode, class T>
+void solve_lane(T u, T dy, T phi, T& s, int& which) {
+  if constexpr (rounded_mode) solve_rounded_lane(u, dy, phi, s, which);
+  else solve_stable_lane(u, dy, phi, s, which);
+}
+
 // The packed lanes' s by `answer`, written to their places (their cases are
-// written by the first pass); those whose s cannot move back, by
-// solve_stable. Returns how many those were. `clamp` (s, u, dy) is the
-// lanes' clamp onto the side of dy of their case.
-template <class D, class Answer, class Clamp>
+// written by the first pass); those whose s is NaN or cannot move back, by
+// the scalar path. Returns how many those were. `clamp` (s, u, dy) is the
+// lanes' clamp onto the side of dy of their case. (The rounded mode's packs
+// hold no moved lane.)
+template <bool rounded_mode, class D, class Answer, class Clamp>
 HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
                                        const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
                                        int* which_out, Answer answer, Clamp clamp) {
@@ -627,7 +679,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
       for (std::ptrdiff_t j = 0; j < lanes_here; ++j)
         if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) {
           const auto i = static_cast<std::ptrdiff_t>(lanes_in.index[k + j]);
-          solve_stable_lane(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
+          solve_lane<rounded_mode>(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
           ++left;
         }
     }
@@ -642,7 +694,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
 // inside the common window or moved by phi's band (solve_stable's moved stage),
 // have their case decided as solve_stable decides it and are packed by it;
 // the rest are noted for solve_stable.
-template <class D>
+template <bool rounded_mode, class D>
 HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
                             hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted) {
   using T = hn::TFromD<D>;
@@ -753,6 +805,10 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
       moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
     }
     moved_phi = hn::IfThenElse(answerable.m, phi, one);
+    // The rounded mode's step is proven inside the plain window; phi's band
+    // moves u and dy beyond it (to 2^389 and above where phi lies inside it):
+    // solve_rounded takes the lanes it would move.
+    if constexpr (rounded_mode) answerable.m = hn::And(answerable.m, inside);
     phi_factor = moved_phi;
     dy_factor = moved_dy;
     if constexpr (subnormal_phi_in_vectors) {
@@ -796,10 +852,13 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   };
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
   const auto is_root = answerable & !free_flight & !is_contact;
+  const auto is_release = is_root & contact_before & lane_mask<D>{hn::FirstN(d, rounded_mode ? hn::Lanes(d) : 0)};
+  const auto is_root_packed = is_root & !is_release;
   if (hn::AllTrue(d, inside)) [[likely]] {
     hn::StoreU(which_lanes(which), di32, which_out + i);
     pack(d, sorted.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    pack(d, sorted.roots, is_root.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    pack(d, sorted.roots, is_root_packed.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    if constexpr (rounded_mode) pack(d, sorted.releases, is_release.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
     return;
   }
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
@@ -818,14 +877,33 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, lanes_of.m, u, dy, phi, offset, index);
   };
   pack_some(sorted.contacts, is_contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.roots, is_root & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.roots, is_root_packed & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.releases, is_release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
   pack_some(sorted.contacts_of_subnormal_phi, is_contact & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
   pack_some(sorted.roots_of_subnormal_phi, is_root & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
   pack_some(sorted.scalar, !(answerable | free_flight | far), u, dy, phi);
-  sorted.roots.moved = sorted.contacts.moved = sorted.roots_of_subnormal_phi.moved = sorted.contacts_of_subnormal_phi.moved = true;
+  sorted.roots.moved = sorted.releases.moved = sorted.contacts.moved = sorted.roots_of_subnormal_phi.moved =
+      sorted.contacts_of_subnormal_phi.moved = true;
 }
 
-template <class T>
+// Every lane of a pack by the scalar path; returns how many.
+template <bool rounded_mode, class T>
+std::ptrdiff_t solve_each_lane(packed_lanes<T>& pack, const T* u, const T* dy, const T* phi, T* s, int* which) {
+  for (std::ptrdiff_t k = 0; k < pack.count; ++k) {
+    const auto lane = static_cast<std::ptrdiff_t>(pack.index[k]);
+    solve_lane<rounded_mode>(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
+  }
+  const std::ptrdiff_t count = pack.count;
+  pack.count = 0;
+  pack.moved = false;
+  return count;
+}
+
+// solve_batch, or with `rounded_mode` solve_rounded_batch: the first pass is the
+// same (the exact case of every lane, free flight answered); the rounded mode
+// answers the lanes of the plain packs by the fixed-bound step and leaves
+// the rest to solve_rounded.
+template <bool rounded_mode, class T>
 std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
   std::ptrdiff_t i = 0, left = 0;
 #if HWY_NATIVE_FMA
@@ -835,49 +913,61 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   sorted_lanes<T> sorted;
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
-    for (; i < end; i += width) sort_vector(d, u, dy, phi, s, which, i, sorted);
+    for (; i < end; i += width) sort_vector<rounded_mode>(d, u, dy, phi, s, which, i, sorted);
     using L = lanes<D>;
     auto root_clamp = [](L s, L u, L dy) { return select(dy <= L(0), detail::impact_clamped(s, u, dy), detail::clamped_above_positive(s, dy)); };
     auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
-    left += solve_packed(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); }, root_clamp);
-    left += solve_packed(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
-                         contact_clamp);
-    if (sorted.roots_of_subnormal_phi.count != 0)
-      left += solve_packed(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_roots<D, true>(x...); }, root_clamp);
-    if (sorted.contacts_of_subnormal_phi.count != 0)
-      left += solve_packed(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
-                           [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
-    if (sorted.far_impacts.count != 0)
-      left += solve_packed(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
-                           root_clamp);
-    if (sorted.far_contacts.count != 0)
-      left += solve_packed(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
-                           contact_clamp);
-    if (sorted.far_releases.count != 0)
-      left += solve_packed(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
-                           root_clamp);
-    packed_lanes<T>& scalar = sorted.scalar;
-    for (std::ptrdiff_t k = 0; k < scalar.count; ++k) {
-      const auto lane = static_cast<std::ptrdiff_t>(scalar.index[k]);
-      solve_stable_lane(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
+    if constexpr (rounded_mode) {
+      left += solve_packed<true>(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return rounded_impacts<D>(x...); },
+                                 root_clamp);
+      left += solve_packed<true>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return rounded_releases<D>(x...); },
+                                 root_clamp);
+      left += solve_packed<true>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return rounded_contacts<D>(x...); },
+                                 contact_clamp);
+      for (auto* pack : {&sorted.roots_of_subnormal_phi, &sorted.contacts_of_subnormal_phi, &sorted.far_impacts,
+                         &sorted.far_contacts, &sorted.far_releases})
+        left += solve_each_lane<true>(*pack, u, dy, phi, s, which);
+    } else {
+      left += solve_packed<false>(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); }, root_clamp);
+      left += solve_packed<false>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
+                                  contact_clamp);
+      if (sorted.roots_of_subnormal_phi.count != 0)
+        left += solve_packed<false>(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
+                                    [](auto... x) { return answer_roots<D, true>(x...); }, root_clamp);
+      if (sorted.contacts_of_subnormal_phi.count != 0)
+        left += solve_packed<false>(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
+                                    [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
+      if (sorted.far_impacts.count != 0)
+        left += solve_packed<false>(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
+                                    root_clamp);
+      if (sorted.far_contacts.count != 0)
+        left += solve_packed<false>(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
+                                    contact_clamp);
+      if (sorted.far_releases.count != 0)
+        left += solve_packed<false>(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
+                                    root_clamp);
     }
-    left += scalar.count;
-    scalar.count = 0;
+    left += solve_each_lane<rounded_mode>(sorted.scalar, u, dy, phi, s, which);
   }
 #endif
   // the last lanes (and every lane where the vectors' multiply-add would round twice)
-  return left + solve_stable_lanes(u + i, dy + i, phi + i, s + i, which + i, n - i);
+  for (; i < n; ++i, ++left) solve_lane<rounded_mode>(u[i], dy[i], phi[i], s[i], which[i]);
+  return left;
 }
 
 }  // namespace
 
 std::ptrdiff_t solve_double(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n) {
-  return solve(u, dy, phi, s, which, n);
+  return solve<false>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_float(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
-  return solve(u, dy, phi, s, which, n);
+  return solve<false>(u, dy, phi, s, which, n);
+}
+
+std::ptrdiff_t solve_rounded_double(const double* u, const double* dy, const double* phi, double* s, int* which,
+                                    std::ptrdiff_t n) {
+  return solve<true>(u, dy, phi, s, which, n);
 }
 
 }  // namespace contact::batch_kernels::CONTACT_BATCH_KERNEL_NAME

@@ -1,7 +1,9 @@
-// contact::batch: solve_batch over Eigen arrays (Eigen3::Eigen), bit for bit the
-// scalar solve_stable on every lane: the four cases, lanes near (A.21)'s
-// boundary, and lanes outside the vector window (which the scalar path solves).
+// contact::batch: solve_batch and solve_rounded_batch over Eigen arrays
+// (Eigen3::Eigen), bit for bit the scalar solve_stable and solve_rounded on
+// every lane: the four cases, lanes near (A.21)'s boundary, and lanes outside
+// the vector window (which the scalar path solves).
 #include <contact/batch.hpp>
+#include <contact/rounded.hpp>
 #include <contact/stable.hpp>
 
 #include <Eigen/Core>
@@ -20,7 +22,8 @@ template <class T>
 using bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
 
 template <class T>
-int check(const char* type, const std::vector<T>& us, const std::vector<T>& dys, const std::vector<T>& phis) {
+int check(const char* type, const std::vector<T>& us, const std::vector<T>& dys, const std::vector<T>& phis,
+          bool rounded) {
   const Eigen::Index n = static_cast<Eigen::Index>(us.size());
   contact::batch_array<T> u(n), dy(n), phi(n), s;
   contact::batch_array<int> which;
@@ -29,7 +32,10 @@ int check(const char* type, const std::vector<T>& us, const std::vector<T>& dys,
     dy[i] = dys[std::size_t(i)];
     phi[i] = phis[std::size_t(i)];
   }
-  contact::solve_batch(u, dy, phi, s, which);
+  if (rounded)
+    contact::solve_rounded_batch(u, dy, phi, s, which);
+  else
+    contact::solve_batch(u, dy, phi, s, which);
   int wrong = 0;
   if (s.size() != n || which.size() != n) {
     std::printf("batch<%s>: %td results for %td lanes\n", type, std::ptrdiff_t(s.size()), std::ptrdiff_t(n));
@@ -37,7 +43,7 @@ int check(const char* type, const std::vector<T>& us, const std::vector<T>& dys,
   }
   int cases[5] = {};
   for (Eigen::Index i = 0; i < n; ++i) {
-    const contact::solution<T> r = contact::solve_stable(u[i], dy[i], phi[i]);
+    const contact::solution<T> r = rounded ? contact::solve_rounded(u[i], dy[i], phi[i]) : contact::solve_stable(u[i], dy[i], phi[i]);
     ++cases[static_cast<int>(r.which)];
     if (std::bit_cast<bits<T>>(s[i]) != std::bit_cast<bits<T>>(r.s) || which[i] != static_cast<int>(r.which)) {
       std::printf("batch<%s>: lane %td (u %a, dy %a, phi %a): batch %a case %d, scalar %a case %d\n", type,
@@ -56,7 +62,7 @@ int check(const char* type, const std::vector<T>& us, const std::vector<T>& dys,
       std::printf("batch<%s>: no lane of case %d: the inputs do not cover every case\n", type, c);
       ++wrong;
     }
-  std::printf("batch<%s>: %td lanes (free %d, impact %d, contact %d, release %d, invalid %d): %s\n", type,
+  std::printf("%sbatch<%s>: %td lanes (free %d, impact %d, contact %d, release %d, invalid %d): %s\n", rounded ? "rounded_" : "", type,
               std::ptrdiff_t(n), cases[1], cases[2], cases[3], cases[4], cases[0], wrong ? "WRONG" : "ok");
   return wrong;
 }
@@ -88,7 +94,7 @@ int run(const char* type) {
   u.insert(u.end(), {big, tiny, 0, nan, 1, 1, -big});
   dy.insert(dy.end(), {T(1), tiny, 0, T(1), inf, T(1), big});
   phi.insert(phi.end(), {T(2), T(1), T(1), T(1), T(1), T(-1), T(3)});
-  return check<T>(type, u, dy, phi);
+  return check<T>(type, u, dy, phi, false) + check<T>(type, u, dy, phi, true);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// contact::solve_batch: the stable closed form of (A.2) over arrays.
+// contact::solve_batch: the stable closed form of (A.2) over arrays, and
+// contact::solve_rounded_batch: the correctly rounded mode over arrays.
 //
 // Every lane gets exactly the s and the case that contact::solve_stable gives
 // for it, bit for bit. float and double run a vector kernel (Google Highway),
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <span>
 
+#include "rounded.hpp"
 #include "stable.hpp"
 
 namespace contact {
@@ -25,6 +27,11 @@ struct batch_target {
   // solve_batch on this kernel; returns how many lanes it left to solve_stable
   std::ptrdiff_t (*solve_double)(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n);
   std::ptrdiff_t (*solve_float)(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n);
+  // solve_rounded_batch on this kernel (float: solve_rounded lane by lane); returns how many lanes it left to solve_rounded
+  std::ptrdiff_t (*solve_rounded_double)(const double* u, const double* dy, const double* phi, double* s, int* which,
+                                         std::ptrdiff_t n);
+  std::ptrdiff_t (*solve_rounded_float)(const float* u, const float* dy, const float* phi, float* s, int* which,
+                                        std::ptrdiff_t n);
 };
 
 // Every kernel compiled into the library, widest first, "scalar" last (always
@@ -33,9 +40,37 @@ struct batch_target {
 std::span<const batch_target> batch_targets();
 const batch_target& chosen_batch_target();
 
+template <class T>
+using batch_array = Eigen::Array<T, Eigen::Dynamic, 1>;
+
 namespace batch_detail {
+// One lane's answer into the output arrays' places.
+template <class T>
+void store(const solution<T>& r, T& s, int& which) {
+  s = r.s;
+  which = static_cast<int>(r.which);
+}
+
+// The lanes one by one, for the types without a kernel.
+template <class T, class Solve>
+void each_lane(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n, Solve solve) {
+  for (std::ptrdiff_t i = 0; i < n; ++i) store(solve(u[i], dy[i], phi[i]), s[i], which[i]);
+}
+
+// The Eigen form: s and which resized to the length of u, which dy and phi must have too.
+template <class T, class Solve>
+void on_arrays(const batch_array<T>& u, const batch_array<T>& dy, const batch_array<T>& phi, batch_array<T>& s,
+               batch_array<int>& which, Solve solve) {
+  eigen_assert(dy.size() == u.size() && phi.size() == u.size());
+  s.resize(u.size());
+  which.resize(u.size());
+  solve(u.data(), dy.data(), phi.data(), s.data(), which.data(), u.size());
+}
+
 void solve_chosen(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n);
 void solve_chosen(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n);
+void solve_rounded_chosen(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n);
+void solve_rounded_chosen(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n);
 }  // namespace batch_detail
 
 // Solves (A.2) for the n lanes u[i], dy[i], phi[i]; writes s[i] and the case
@@ -46,26 +81,37 @@ void solve_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::p
   if constexpr (detail::hardware_binary<T>) {
     batch_detail::solve_chosen(u, dy, phi, s, which, n);
   } else {
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      const solution<T> r = solve_stable(u[i], dy[i], phi[i]);
-      s[i] = r.s;
-      which[i] = static_cast<int>(r.which);
-    }
+    batch_detail::each_lane(u, dy, phi, s, which, n, [](const T& a, const T& b, const T& c) { return solve_stable(a, b, c); });
   }
 }
 
+// The same for solve_rounded: every lane gets exactly solve_rounded's s and
+// case. In double the kernels take the lanes inside the common window by the
+// fixed-bound step and its rounding test (rounded.hpp) in vectors; the lanes
+// whose test fails, and every other lane, take solve_rounded. Float, and the
+// other types, run solve_rounded lane by lane. The types of
+// contact::rounded_available only.
 template <class T>
-using batch_array = Eigen::Array<T, Eigen::Dynamic, 1>;
+void solve_rounded_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
+  if constexpr (detail::hardware_binary<T>) {
+    batch_detail::solve_rounded_chosen(u, dy, phi, s, which, n);
+  } else {
+    batch_detail::each_lane(u, dy, phi, s, which, n, [](const T& a, const T& b, const T& c) { return solve_rounded(a, b, c); });
+  }
+}
 
-// The Eigen form: s and which are resized to the length of u; dy and phi must
+// The Eigen forms: s and which are resized to the length of u; dy and phi must
 // have that length too.
 template <class T>
 void solve_batch(const batch_array<T>& u, const batch_array<T>& dy, const batch_array<T>& phi, batch_array<T>& s,
                  batch_array<int>& which) {
-  eigen_assert(dy.size() == u.size() && phi.size() == u.size());
-  s.resize(u.size());
-  which.resize(u.size());
-  solve_batch(u.data(), dy.data(), phi.data(), s.data(), which.data(), u.size());
+  batch_detail::on_arrays(u, dy, phi, s, which, [](auto... x) { solve_batch<T>(x...); });
+}
+
+template <class T>
+void solve_rounded_batch(const batch_array<T>& u, const batch_array<T>& dy, const batch_array<T>& phi, batch_array<T>& s,
+                         batch_array<int>& which) {
+  batch_detail::on_arrays(u, dy, phi, s, which, [](auto... x) { solve_rounded_batch<T>(x...); });
 }
 
 }  // namespace contact

@@ -275,17 +275,25 @@ bool inputs_in_fast_window(const T& u, const T& dy, const T& phi) {
 
 namespace rounded_form {
 
+#if defined(__FMA__)
+inline constexpr bool fma_instruction = true;
+#else
+inline constexpr bool fma_instruction = false;
+#endif
+
 // a * b = high + low exactly (barring underflow of low), inline: the hardware
-// fma where the target has one, else Dekker's product on Veltkamp's split (a
-// library fma call, on the baseline x86-64 target, is slower than the whole
-// split; x87 long double and float128 have no hardware fma at all).
+// fma where the target has one (the batch kernels' lanes always do), else
+// Dekker's product on Veltkamp's split (a library fma call, on the baseline
+// x86-64 target, is slower than the whole split; x87 long double and float128
+// have no hardware fma at all).
 template <class T>
 [[gnu::always_inline]] inline detail::exact_pair<T> product(const T& a, const T& b) {
-#if defined(__FMA__)
-  if constexpr (detail::hardware_binary<T>) return detail::two_prod(a, b);
-#endif
-  const T high = a * b;
-  return {high, detail::dekker_product_error(a, b, high)};
+  if constexpr (detail::lane_vector<T> || (fma_instruction && detail::hardware_binary<T>)) {
+    return detail::two_prod(a, b);
+  } else {
+    const T high = a * b;
+    return {high, detail::dekker_product_error(a, b, high)};
+  }
 }
 
 // s0 (s0 + u), the term (A.30) and (A.32) share: s0 + u = sum.high + sum.low
@@ -297,7 +305,7 @@ struct own_sum_product {
 };
 
 template <class T>
-own_sum_product<T> times_own_sum(const T& s0, const T& u) {
+[[gnu::always_inline]] inline own_sum_product<T> times_own_sum(const T& s0, const T& u) {
   const auto sum = detail::two_sum(s0, u);
   const auto high = product(s0, sum.high);
   return {sum, {high.high, s0 * sum.low + high.low}};
@@ -336,16 +344,18 @@ struct fixed_bound_exponents<113> {  // binary128
   static constexpr int contact = -219, contact_cancellation = -219, impact = -217, release = -217;
 };
 
-template <class T>
-using fixed_bounds_of = fixed_bound_exponents<std::numeric_limits<T>::digits>;
+template <class T>  // (T, or the lanes of T)
+using fixed_bounds_of = fixed_bound_exponents<std::numeric_limits<detail::scalar_of_t<T>>::digits>;
 
 template <class T>
 concept has_fixed_bounds = rounded_available<T> && requires { fixed_bounds_of<T>::contact; };
 
-// 2^Exponent in T (a constant for the hardware types).
+// 2^Exponent in T (a constant for the hardware types and their lanes).
 template <class T, int Exponent>
 T power_of_two() {
-  if constexpr (std::is_floating_point_v<T>) {
+  if constexpr (detail::lane_vector<T>) {
+    return T(power_of_two<detail::scalar_of_t<T>, Exponent>());
+  } else if constexpr (std::is_floating_point_v<T>) {
     constexpr T power = [] {
       T x = 1;
       for (int k = 0; k < -Exponent; ++k) x /= 2;
@@ -369,13 +379,14 @@ struct fixed_step {
 // as (m.high - w.high) + (m.low + phi g.low - w.low), m.high and w.high close. The
 // residual's roundings scale with the cancelling terms, of order phi dy / (1 + phi),
 // not with s0, so the margin has a term of each: K |s0| + K' phi dy / (1 + phi).
+// Like every step below, written once for T and for the batch kernels' lanes.
 template <class T>
 fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   using bounds = fixed_bounds_of<T>;
   const T s0 = stable_form::contact(u, dy, phi);
-  const T inverse = 1 / T(1 + phi);
-  const auto g = detail::two_sum(T(2 * dy), T(-s0));
+  const T inverse = T(1) / T(T(1) + phi);
+  const auto g = detail::two_sum(T(T(2) * dy), T(-s0));
   const auto m = product(phi, g.high);
   const auto w = detail::two_sum(u, s0);
   const T r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);
@@ -430,35 +441,47 @@ std::optional<T> contact_rounded_by_midpoints(T c, const T& u, const T& dy, cons
 // (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc). Newton's square
 // term grows as Q's two roots merge, so the margin is K (1 + phi) s0^2 / sqrt(disc),
 // K |s0| over their relative distance (the discriminant is a sum of non-negative
-// terms, u^2 > 0 among them, so the root is not 0 in the window).
+// terms, u^2 > 0 among them, so the root is not 0 in the window). The step from
+// s0 and the square root, as stable_form::impact_with_square_root gives them
+// (the batch kernels share one square root between impacts and releases):
 template <class T>
-fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
-  using std::fabs;
-  const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
-  const T denominator = 1 + phi;
-  const T inverse = 1 / root;
+fixed_step<T> impact_newton_step(const T& s0, const T& root, const T& u, const T& dy, const T& phi) {
+  const T denominator = T(1) + phi;
+  const T inverse = T(1) / root;
   const auto a = times_own_sum(s0, u).product;
   const auto g = detail::two_sum(dy, T(-s0));
   const auto k = product(g.high, g.high);
-  const T k_low = 2 * g.high * g.low + k.low;
+  const T k_low = T(2) * g.high * g.low + k.low;
   const auto m = product(phi, k.high);
   const T m_low = phi * k_low + m.low;
   const T q = (a.high + m.high) + (a.low + m_low);
   return {s0, q * inverse, power_of_two<T, fixed_bounds_of<T>::impact>() * (denominator * s0 * s0 * inverse)};
 }
 
-// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*.
 template <class T>
-fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
+fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
+  const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
+  return impact_newton_step(s0, root, u, dy, phi);
+}
+
+// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*; from s0 and the
+// square root, as stable_form::release_with_square_root gives them.
+template <class T>
+fixed_step<T> release_newton_step(const T& s0, const T& root, const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
-  const T inverse = 1 / root;
+  const T inverse = T(1) / root;
   const auto a = times_own_sum(s0, u).product;
   const auto b = product(phi, dy);
   const auto c = product(b.high, dy);
   const T c_low = b.low * dy + c.low;
   const T q = (a.high - c.high) + (a.low - c_low);
   return {s0, T(-q * inverse), power_of_two<T, fixed_bounds_of<T>::release>() * fabs(s0)};
+}
+
+template <class T>
+fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
+  const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
+  return release_newton_step(s0, root, u, dy, phi);
 }
 
 // The root lies in [s0 + delta - margin, s0 + delta + margin]: the ends of that

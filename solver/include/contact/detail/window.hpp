@@ -82,19 +82,28 @@ static_assert(plain_window<double> == 240 && plain_window<float> == 24);
 // [2^-E, 2^E] with x normal. Bit patterns of non-negative numbers order as
 // their values, so the test is one unsigned comparison; zero, subnormals, NaN
 // and infinity all fail it.
+// The window's ends as bits: |x| lies inside iff bits(|x|) - lowest <= span
+// (also the batch kernels' lane test).
 template <class T>
   requires hardware_binary<T>
-bool magnitude_inside_plain_window(const T& x) {
+struct plain_window_bits {
   using bits = typename binary_layout<T>::bits;
-  constexpr bits magnitude = ~binary_layout<T>::sign;
-  constexpr T highest = [] {
+  static constexpr T highest = [] {
     T power = 1;
     for (long k = 0; k < plain_window<T>; ++k) power *= 2;
     return power;
   }();
-  constexpr bits lowest = std::bit_cast<bits>(T(1) / highest);
-  constexpr bits span = std::bit_cast<bits>(highest) - lowest;
-  return bits((std::bit_cast<bits>(x) & magnitude) - lowest) <= span;
+  static constexpr bits lowest = std::bit_cast<bits>(T(1) / highest);
+  static constexpr bits span = std::bit_cast<bits>(highest) - lowest;
+};
+
+template <class T>
+  requires hardware_binary<T>
+bool magnitude_inside_plain_window(const T& x) {
+  using window = plain_window_bits<T>;
+  using bits = typename window::bits;
+  constexpr bits magnitude = ~binary_layout<T>::sign;
+  return bits((std::bit_cast<bits>(x) & magnitude) - window::lowest) <= window::span;
 }
 
 // floor(log2 |x|) for a finite non-zero binary32 or binary64 x, subnormals included.
