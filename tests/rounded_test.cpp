@@ -618,6 +618,89 @@ TEST(RoundedWiderStep, DecidesDoubleBeyondItsWindow) {
   }
 }
 
+// ---- beside an input: stiff and soft phi far beyond the window --------------------
+
+// Physical u and dy (some of them powers of two, where the gap below halves) with
+// phi far above or below the plain window, as the phi scene draws them: per case,
+// how many the value beside the root decides, each checked against the reference.
+struct beside_tally {
+  long decided[5] = {}, seen[5] = {}, wrong = 0;
+};
+
+template <class T>
+beside_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
+  std::mt19937_64 random(seed);
+  auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
+  beside_tally t;
+  for (int k = 0; k < count; ++k) {
+    auto physical = [&] {
+      const T magnitude = (random() % 4 == 0) ? T(std::ldexp(1.0, int(uniform(-23, -10)))) : T(std::pow(10.0, uniform(-7, -3)));
+      return random() % 2 ? magnitude : T(-magnitude);
+    };
+    const T u = physical(), dy = physical();
+    const T phi = T(std::ldexp(uniform(1, 2), int(uniform(lowest_binade, highest_binade))));
+    const auto exact = reference::solve(u, dy, phi);
+    const int which = static_cast<int>(exact.which);
+    ++t.seen[which];
+    if (exact.which == contact_case::free) continue;
+    const auto beside = detail::rounded_beside_an_input(u, dy, phi, exact.which);
+    if (!beside) continue;
+    ++t.decided[which];
+    if (!correctly_rounded(*beside, exact, u, dy, phi) && ++t.wrong <= 5)
+      ADD_FAILURE() << std::hexfloat << "u=" << double(u) << " dy=" << double(dy) << " phi=" << double(phi) << ": " << double(*beside)
+                    << ", exact root " << exact.s.to_string(40);
+  }
+  return t;
+}
+
+// Stiff phi (2^300 to 2^1000): every (A.30) rounds to dy (and the rare (A.31),
+// u >= phi dy, to 2 dy); (A.32)'s root grows as sqrt(phi) |dy| and has no such value.
+TEST(RoundedBesideAnInput, StiffImpactsRoundToDy) {
+  const auto t = beside_an_input_on<double>(91, 20000, 300, 1000);
+  EXPECT_EQ(t.wrong, 0);
+  const int impact = static_cast<int>(contact_case::impact), contact = static_cast<int>(contact_case::contact);
+  EXPECT_GT(t.seen[impact], 1000);
+  EXPECT_EQ(t.decided[impact], t.seen[impact]);
+  EXPECT_EQ(t.decided[contact], t.seen[contact]);
+  EXPECT_EQ(t.decided[static_cast<int>(contact_case::release)], 0);
+}
+
+// Soft and subnormal phi (2^-1074 to 2^-300): every (A.31), (A.30) and (A.32)
+// rounds to -u (a release there has u < -dy < 0).
+TEST(RoundedBesideAnInput, SoftInputsRoundToMinusU) {
+  const auto t = beside_an_input_on<double>(92, 20000, -1074, -300);
+  EXPECT_EQ(t.wrong, 0);
+  for (const auto which : {contact_case::contact, contact_case::impact, contact_case::release}) {
+    const int c = static_cast<int>(which);
+    EXPECT_GT(t.seen[c], 1000) << c;
+    EXPECT_EQ(t.decided[c], t.seen[c]) << c;
+  }
+}
+
+// Near the window's edge the sliver is as wide as the gap: most inputs there are
+// left to the step, and whatever is decided is right.
+TEST(RoundedBesideAnInput, DecidesOnlyWhereTheSliverIsNarrowerThanHalfTheGap) {
+  const auto t = beside_an_input_on<double>(93, 20000, -60, 60);
+  EXPECT_EQ(t.wrong, 0);
+  long decided = 0, seen = 0;
+  for (int c = 2; c <= 4; ++c) decided += t.decided[c], seen += t.seen[c];
+  EXPECT_GT(decided, 0);
+  EXPECT_LT(decided, seen / 2);
+}
+
+// The value beside the root is taken only where it is a finite, non-zero T, in
+// every type with a fast path.
+TYPED_TEST(RoundedFixedStep, NeitherZeroNorInfinityIsTheValueBeside) {
+  using T = TypeParam;
+  const T big = (std::numeric_limits<T>::max)(), small = T(1e-5), stiff = T(0x1p1000), soft = T(0x1p-1000);
+  EXPECT_FALSE(detail::rounded_beside_an_input(T(-T(0)), small, soft, contact_case::contact));  // r = -u = +0
+  EXPECT_FALSE(detail::rounded_beside_an_input(small, big, stiff, contact_case::contact));      // r = 2 dy overflows
+  EXPECT_FALSE(detail::rounded_beside_an_input(small, T(0), stiff, contact_case::impact));      // r = dy = 0
+  EXPECT_FALSE(detail::rounded_beside_an_input(small, T(-small), T(0.5), contact_case::impact));  // phi in (1/4, 1)
+  EXPECT_FALSE(detail::rounded_beside_an_input(small, small, stiff, contact_case::release));    // u > 0: no value beside
+  EXPECT_EQ(detail::rounded_beside_an_input(small, T(-small / 2), stiff, contact_case::impact), T(-small / 2));  // r = dy
+}
+
 // An exact tie moved beyond double's window (homogeneity: u and dy times 2^600
 // move the root, a midpoint, by 2^600) stays a tie, which no interval of W can
 // place on one side: the exact decision decides it, to the even neighbour.

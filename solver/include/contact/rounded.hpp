@@ -554,8 +554,7 @@ template <class T>
                                                                const solution<T>* start) {
   using std::isinf;
   if (auto invalid = reject_invalid(u, dy, phi)) return {*invalid, false};
-  const solution<T> stable = start ? *start : solve_stable(u, dy, phi);
-  if (stable.which == contact_case::free) return {{T(-u), contact_case::free}, false};  // (A.29) exact
+  const solution<T> stable = start ? *start : solve_stable(u, dy, phi);  // (never free flight: answered before)
   // stable's s is never -inf (no root lies below -max, and its (A.30) clamp keeps s >= -u)
   T s = walk_to_rounded_root(isinf(stable.s) ? (std::numeric_limits<T>::max)() : stable.s, u, dy, phi);
   if (s == 0) s = signed_zero_for_root(u, dy, phi);
@@ -662,8 +661,7 @@ template <class T, class W>
   using std::fabs;
   const W wide_u = widened<W>(u), wide_dy = widened<W>(dy), wide_phi = widened<W>(phi);
   if (!inputs_in_fast_window(wide_u, wide_dy, wide_phi)) return rounded_by_exact_decision<T>(u, dy, phi, nullptr);
-  const auto [step, which] = fixed_bound_step(wide_u, wide_dy, wide_phi);
-  if (which == contact_case::free) return {{T(-u), which}, false};
+  const auto [step, which] = fixed_bound_step(wide_u, wide_dy, wide_phi);  // (never free flight: answered before)
   T rounded;
   W candidate = step.s0;
   if (in_fast_window(step.s0, false)) [[likely]] {
@@ -687,6 +685,64 @@ traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi
   else return rounded_by_wider_step<T, W>(u, dy, phi);
 }
 
+// ---- far beyond the window: the root beside a value the inputs make ---------------
+//
+// Where phi lies far above or below the scale of u and dy, the root lies within
+// a sliver of a T value r made exactly from the inputs, and rounds to r when
+// the sliver is narrower than half the gap from |r| to its lower neighbour (the
+// narrower gap, on either side). With M = max(|u|, |dy|):
+//   (A.31) s = (2 phi dy - u) / (1 + phi): |s - 2 dy| = |u + 2 dy| / (1 + phi) <= 3 M / phi,
+//          and |s + u| = phi |u + 2 dy| / (1 + phi) <= 3 phi M; r = 2 dy for phi >= 1, else -u.
+//   (A.30), dy < 0 < dy + u, phi >= 1: s = dy - d, d the larger root of
+//          (1 + phi) d^2 - (2 dy + u) d + dy (dy + u) = 0 (dy (dy + u) < 0), so d <=
+//          |2 dy + u| / (1 + phi) + sqrt(|dy| (dy + u) / (1 + phi)) <= 3 M / phi + M / sqrt(phi)
+//          <= 4 M / sqrt(phi); r = dy.
+//   (A.30), phi <= 1/4: s = -u + e; with f(e) = e (u - e) - phi (dy + u - e)^2 = -Q(-u + e),
+//          f(0) < 0 and, at e1 = 2 phi (dy + u)^2 / u <= 2 phi u <= u / 2 (also <= 2 (dy + u)),
+//          f(e1) >= e1 u / 2 - phi (dy + u)^2 = 0: Q(-u) > 0 >= Q(-u + e1), so the smaller
+//          root lies in (-u, -u + e1], e <= 2 phi u; r = -u.
+//   (A.32), u < 0: s = (|u| + sqrt(u^2 + 4 phi dy^2)) / 2 <= |u| + phi dy^2 / |u|; r = -u.
+// Each bound is computed on scaled<T> (no under- or overflow; a product, a
+// quotient or a square root rounds once, relative 2^-p) with a factor of room
+// for those roundings (4 for 3, 8 for 4, 2 for 1), and compared exactly.
+// `which` is the exact case of a valid input, not free flight.
+template <class T>
+std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, contact_case which) {
+  using S = scaled<T>;
+  using std::fabs;
+  using std::isfinite;
+  const S a(fabs(u)), b(fabs(dy)), stiffness(phi), largest(fabs(u) > fabs(dy) ? fabs(u) : fabs(dy));
+  T r;
+  S bound;
+  if (which == contact_case::contact) {
+    if (phi >= T(1)) {
+      r = T(2) * dy;
+      bound = S(4) * largest / stiffness;
+    } else {
+      r = -u;
+      bound = S(4) * stiffness * largest;
+    }
+  } else if (which == contact_case::impact) {
+    if (phi >= T(1)) {
+      r = dy;
+      bound = S(8) * largest / square_root(stiffness);
+    } else if (phi <= T(0.25)) {
+      r = -u;
+      bound = S(4) * stiffness * a;
+    } else {
+      return std::nullopt;
+    }
+  } else {  // release
+    if (!(u < 0)) return std::nullopt;
+    r = -u;
+    bound = S(2) * stiffness * b * b / a;
+  }
+  if (r == 0 || !isfinite(r)) return std::nullopt;
+  const T magnitude = fabs(r), gap = magnitude - next_down(magnitude);
+  if (S(gap) > S(2) * bound) return r;
+  return std::nullopt;
+}
+
 // Everything but double's common case, out of line so that its caller stays small.
 template <class T>
 [[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
@@ -702,6 +758,11 @@ template <class T>
     // the exact decision.
     if constexpr (rounded_form::has_fixed_bounds<T>) {
       if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
+    }
+    if (!reject_invalid(u, dy, phi)) {
+      const contact_case which = exact_case(u, dy, phi);
+      if (which == contact_case::free) return {{T(-u), which}, false};  // (A.29) exact
+      if (auto beside = rounded_beside_an_input(u, dy, phi, which)) return {{*beside, which}, false};
     }
     return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
   }
