@@ -540,7 +540,7 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 // The lanes inside the fast window take solve_rounded's fixed-bound step
 // (rounded_form's steps, on lanes) and its rounding test; the root rounds as
 // both ends of the step's interval round. A lane whose test fails, or whose
-// operands or s0 leave the window, gets NaN: solve_rounded decides it.
+// s0 leaves the plain window, gets NaN: solve_rounded decides it.
 
 // x normal (not zero) inside the plain window: detail::magnitude_inside_plain_window
 template <class D>
@@ -852,8 +852,9 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   };
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
   const auto is_root = answerable & !free_flight & !is_contact;
-  const auto is_release = is_root & contact_before & lane_mask<D>{hn::FirstN(d, rounded_mode ? hn::Lanes(d) : 0)};
-  const auto is_root_packed = is_root & !is_release;
+  // (the rounded mode packs the releases apart: its steps share no square root)
+  const auto is_release = rounded_mode ? is_root & contact_before : lane_mask<D>{hn::FirstN(d, 0)};
+  const auto is_root_packed = rounded_mode ? is_root & !contact_before : is_root;
   if (hn::AllTrue(d, inside)) [[likely]] {
     hn::StoreU(which_lanes(which), di32, which_out + i);
     pack(d, sorted.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);

@@ -441,11 +441,10 @@ std::optional<T> contact_rounded_by_midpoints(T c, const T& u, const T& dy, cons
 // (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc). Newton's square
 // term grows as Q's two roots merge, so the margin is K (1 + phi) s0^2 / sqrt(disc),
 // K |s0| over their relative distance (the discriminant is a sum of non-negative
-// terms, u^2 > 0 among them, so the root is not 0 in the window). The step from
-// s0 and the square root, as stable_form::impact_with_square_root gives them
-// (the batch kernels share one square root between impacts and releases):
+// terms, u^2 > 0 among them, so the root is not 0 in the window).
 template <class T>
-fixed_step<T> impact_newton_step(const T& s0, const T& root, const T& u, const T& dy, const T& phi) {
+fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
+  const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
   const T denominator = T(1) + phi;
   const T inverse = T(1) / root;
   const auto a = times_own_sum(s0, u).product;
@@ -458,17 +457,11 @@ fixed_step<T> impact_newton_step(const T& s0, const T& root, const T& u, const T
   return {s0, q * inverse, power_of_two<T, fixed_bounds_of<T>::impact>() * (denominator * s0 * s0 * inverse)};
 }
 
+// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*.
 template <class T>
-fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
-  const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
-  return impact_newton_step(s0, root, u, dy, phi);
-}
-
-// (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*; from s0 and the
-// square root, as stable_form::release_with_square_root gives them.
-template <class T>
-fixed_step<T> release_newton_step(const T& s0, const T& root, const T& u, const T& dy, const T& phi) {
+fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
+  const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
   const T inverse = T(1) / root;
   const auto a = times_own_sum(s0, u).product;
   const auto b = product(phi, dy);
@@ -476,12 +469,6 @@ fixed_step<T> release_newton_step(const T& s0, const T& root, const T& u, const 
   const T c_low = b.low * dy + c.low;
   const T q = (a.high - c.high) + (a.low - c_low);
   return {s0, T(-q * inverse), power_of_two<T, fixed_bounds_of<T>::release>() * fabs(s0)};
-}
-
-template <class T>
-fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
-  const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
-  return release_newton_step(s0, root, u, dy, phi);
 }
 
 // The root lies in [s0 + delta - margin, s0 + delta + margin]: the ends of that
@@ -711,7 +698,7 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
   using S = scaled<T>;
   using std::fabs;
   using std::isfinite;
-  const S a(fabs(u)), b(fabs(dy)), stiffness(phi), largest(fabs(u) > fabs(dy) ? fabs(u) : fabs(dy));
+  const S a(fabs(u)), b(fabs(dy)), stiffness(phi), largest(max_of(T(fabs(u)), T(fabs(dy))));
   T r;
   S bound;
   if (which == contact_case::contact) {
