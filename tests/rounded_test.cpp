@@ -620,37 +620,48 @@ TEST(RoundedWiderStep, DecidesDoubleBeyondItsWindow) {
 
 // ---- beside an input: stiff and soft phi far beyond the window --------------------
 
-// Physical u and dy (some of them powers of two, where the gap below halves) with
-// phi far above or below the plain window, as the phi scene draws them: per case,
-// how many the value beside the root decides, each checked against the reference.
+// Per case, how many of `count` inputs (draw) the shortcut `decide` (given the exact
+// case) rounds, each checked against the reference.
 struct beside_tally {
   long decided[5] = {}, seen[5] = {}, wrong = 0;
 };
 
+template <class T, class Draw, class Decide>
+beside_tally decided_against_reference(int count, Draw draw, Decide decide) {
+  beside_tally t;
+  for (int k = 0; k < count; ++k) {
+    const auto [u, dy, phi] = draw();
+    const auto exact = reference::solve(u, dy, phi);
+    const int which = static_cast<int>(exact.which);
+    ++t.seen[which];
+    if (exact.which == contact_case::free) continue;
+    const std::optional<T> decided = decide(u, dy, phi, exact.which);
+    if (!decided) continue;
+    ++t.decided[which];
+    if (!correctly_rounded(*decided, exact, u, dy, phi) && ++t.wrong <= 5)
+      ADD_FAILURE() << std::hexfloat << "u=" << double(u) << " dy=" << double(dy) << " phi=" << double(phi) << ": "
+                    << double(*decided) << ", exact root " << exact.s.to_string(40);
+  }
+  return t;
+}
+
+// Physical u and dy (some of them powers of two, where the gap below halves) with
+// phi far above or below the plain window, as the phi scene draws them.
 template <class T>
 beside_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
   std::mt19937_64 random(seed);
   auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
-  beside_tally t;
-  for (int k = 0; k < count; ++k) {
+  auto draw = [&] {
     auto physical = [&] {
       const T magnitude = (random() % 4 == 0) ? T(std::ldexp(1.0, int(uniform(-23, -10)))) : T(std::pow(10.0, uniform(-7, -3)));
       return random() % 2 ? magnitude : T(-magnitude);
     };
     const T u = physical(), dy = physical();
-    const T phi = T(std::ldexp(uniform(1, 2), int(uniform(lowest_binade, highest_binade))));
-    const auto exact = reference::solve(u, dy, phi);
-    const int which = static_cast<int>(exact.which);
-    ++t.seen[which];
-    if (exact.which == contact_case::free) continue;
-    const auto beside = detail::rounded_beside_an_input(u, dy, phi, exact.which);
-    if (!beside) continue;
-    ++t.decided[which];
-    if (!correctly_rounded(*beside, exact, u, dy, phi) && ++t.wrong <= 5)
-      ADD_FAILURE() << std::hexfloat << "u=" << double(u) << " dy=" << double(dy) << " phi=" << double(phi) << ": " << double(*beside)
-                    << ", exact root " << exact.s.to_string(40);
-  }
-  return t;
+    return std::array<T, 3>{u, dy, T(std::ldexp(uniform(1, 2), int(uniform(lowest_binade, highest_binade))))};
+  };
+  return decided_against_reference<T>(count, draw, [](const T& u, const T& dy, const T& phi, contact_case which) {
+    return detail::rounded_beside_an_input(u, dy, phi, which);
+  });
 }
 
 // Stiff phi (2^300 to 2^1000): every (A.30) rounds to dy (and the rare (A.31),
@@ -699,6 +710,8 @@ TYPED_TEST(RoundedFixedStep, NeitherZeroNorInfinityIsTheValueBeside) {
   EXPECT_FALSE(detail::rounded_beside_an_input(small, T(-small), T(0.5), contact_case::impact));  // phi in (1/4, 1)
   EXPECT_FALSE(detail::rounded_beside_an_input(small, small, stiff, contact_case::release));    // u > 0: no value beside
   EXPECT_EQ(detail::rounded_beside_an_input(small, T(-small / 2), stiff, contact_case::impact), T(-small / 2));  // r = dy
+  EXPECT_FALSE(detail::rounded_beside_an_input(small, T(-small / 2), T(4), contact_case::impact));  // sliver too wide
+  EXPECT_EQ(detail::rounded_beside_an_input(small, small, T(0), contact_case::contact), T(-small));  // phi = 0: s = -u
 }
 
 // An exact tie moved beyond double's window (homogeneity: u and dy times 2^600
@@ -721,6 +734,88 @@ TEST(RoundedWiderStep, LeavesTiesBeyondTheWindowToTheExactDecision) {
       }
     EXPECT_GE(moved, 30);
   }
+}
+
+// ---- moved into the window ----------------------------------------------------------
+
+// u and dy of either sign, their binades drawn from [u_low, u_high] and [dy_low,
+// dy_high], phi's from [phi_low, phi_high]: per case, how many the moves decide.
+beside_tally moves_on(std::uint64_t seed, int count, std::array<int, 2> u_binades, std::array<int, 2> dy_binades,
+                      std::array<int, 2> phi_binades) {
+  std::mt19937_64 random(seed);
+  auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
+  auto in = [&](std::array<int, 2> binades) { return std::ldexp(uniform(1, 2), int(uniform(binades[0], binades[1] + 1))); };
+  auto draw = [&] {
+    const double u = in(u_binades), dy = in(dy_binades);
+    return std::array<double, 3>{random() % 2 ? u : -u, random() % 2 ? dy : -dy, in(phi_binades)};
+  };
+  return decided_against_reference<double>(count, draw, [](double u, double dy, double phi, contact_case which) {
+    return detail::rounded_by_moves(u, dy, phi, which);
+  });
+}
+
+// (A.32) with phi far above the window: dy moves by 2^j and phi by 2^-2j, which
+// keeps its polynomial, into [1, 4); (A.30) and (A.31) have no such move. (Up to
+// phi = 2^900: beyond, dy 2^j lies too far above these u for one window.)
+TEST(RoundedByMoves, StiffReleasesMovePhiIntoTheWindow) {
+  const auto t = moves_on(94, 20000, {-23, -10}, {-23, -10}, {241, 900});
+  EXPECT_EQ(t.wrong, 0);
+  const int release = static_cast<int>(contact_case::release);
+  EXPECT_GT(t.seen[release], 4000);
+  EXPECT_EQ(t.decided[release], t.seen[release]);
+  EXPECT_EQ(t.decided[static_cast<int>(contact_case::impact)], 0);
+  EXPECT_EQ(t.decided[static_cast<int>(contact_case::contact)], 0);
+}
+
+// u and dy far above or below the window, phi inside it: homogeneity moves them
+// by one power of two, and the root back. Every case is decided but where its
+// root leaves the normal range or lies too near a midpoint.
+TEST(RoundedByMoves, FarMagnitudesMoveIntoTheWindow) {
+  for (const auto& [seed, low, high] : {std::array<int, 3>{95, 300, 1000}, std::array<int, 3>{96, -1000, -300}}) {
+    const auto t = moves_on(seed, 20000, {low, high}, {low, high}, {-200, 200});
+    EXPECT_EQ(t.wrong, 0);
+    for (const auto which : {contact_case::contact, contact_case::impact, contact_case::release}) {
+      const int c = static_cast<int>(which);
+      EXPECT_GT(t.seen[c], 1000) << c;
+      EXPECT_GT(t.decided[c], t.seen[c] * 8 / 10) << c;
+    }
+  }
+}
+
+// Zeros move too, a root beyond the largest double is infinite, and a release's u far
+// below 2^j dy is left out; what cannot move, or cannot move back, is left to the
+// wider step.
+TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
+  struct example {
+    double u, dy, phi;
+    bool decided;
+  };
+  const example examples[] = {
+      {0, 0x1p600, 0.5, true},                        // (A.31), u = 0
+      {0x1p600, 0, 3, true},                          // (A.30), dy = 0: s = -u / (1 + phi)
+      {0x1p-600, 0x1p600, 0.5, false},                // u and dy too far apart
+      {0x1p700, 0x1p300, 0x1p300, false},             // (A.31), phi beyond the window
+      {0x1p-1050, 0x1p-1049, 0.5, false},             // (A.31), its root subnormal
+      {0x1p700, 0x1p1000, 0x1p100, true},             // (A.32), its root beyond the largest double: infinity
+      {0x1p-600, 0x1p300, 0x1p100, true},             // (A.32), u far below 2^j dy: left out, the margin doubled
+      {0x1p-600, 0x1p300, 0.5, false},                // (A.31), u as far below dy: not left out
+      {0x1.8p-600, 0x1p-600, 0x1.8p-1, false}};       // (A.31), a root of exactly 0
+  for (const auto& x : examples) {
+    const auto exact = reference::solve(x.u, x.dy, x.phi);
+    const auto moved = detail::rounded_by_moves(x.u, x.dy, x.phi, exact.which);
+    EXPECT_EQ(moved.has_value(), x.decided) << x.u << " " << x.dy << " " << x.phi;
+    if (moved) EXPECT_TRUE(correctly_rounded(*moved, exact, x.u, x.dy, x.phi)) << x.u << " " << x.dy << " " << x.phi;
+  }
+  // an exact tie moved beyond the window stays a tie, which the step leaves undecided
+  int ties = 0;
+  for (const char* name : {"exact_ties_contact", "exact_ties_release", "exact_ties_impact"})
+    for (const auto& tie : read_hard_cases(name)) {
+      const double u = std::ldexp(tie.u, 600), dy = std::ldexp(tie.dy, 600);
+      if (!std::isnormal(u) || !std::isnormal(dy)) continue;
+      ++ties;
+      EXPECT_FALSE(detail::rounded_by_moves(u, dy, tie.phi, detail::exact_case(u, dy, tie.phi))) << tie.line;
+    }
+  EXPECT_GE(ties, 10);
 }
 
 }  // namespace

@@ -356,7 +356,14 @@ TEST(WindowRescale, DominantBinadeDecidesOnlyWhereOneTermOutweighsTheRest) {
   // u's least binade must exceed the others' bounds: 2^11 does over dy < 2^10, 2^10 does not
   EXPECT_EQ(sign_of_dominant_binade(0x1p11, 0x1.fffp9, 0.0), 1);
   EXPECT_EQ(sign_of_dominant_binade(-0x1p11, 0x1.fffp9, 0.0), -1);
-  EXPECT_EQ(sign_of_dominant_binade(-0x1p10, 0x1.fffp9, 0.0), 0);
+  // where no binade outweighs the rest, u + dy's does: here -2^-3 (exact), over no
+  // phi dy, or over phi dy < 2^-4, but not over phi dy < 2^-3; an exact zero, never
+  EXPECT_EQ(sign_of_dominant_binade(-0x1p10, 0x1.fffp9, 0.0), -1);
+  EXPECT_EQ(sign_of_dominant_binade(-0x1p10, 0x1.fffp9, 0x1p-15), -1);
+  EXPECT_EQ(sign_of_dominant_binade(-0x1p10, 0x1.fffp9, 0x1p-14), 0);
+  EXPECT_EQ(sign_of_dominant_binade(-1.0, 1.0, 0.0), 0);
+  // u + dy overflows: infinity reads as binade 1024, and the exact sum lies above 2^1023
+  EXPECT_EQ(sign_of_dominant_binade(0x1.8p1023, 0x1.8p1023, 0x1p-2), 1);  // phi dy < 2^1023
   // phi dy = 1 here, in [2^0, 2^2) as far as the binades tell: it outweighs u < 2^-1, not u < 2^0
   EXPECT_EQ(sign_of_dominant_binade(0x1.fp-2, 0x1p-3, 0x1p3), -1);
   EXPECT_EQ(sign_of_dominant_binade(0x1.fp-1, 0x1p-3, 0x1p3), 0);  // and rightly: the sum is +0x1.8p-4

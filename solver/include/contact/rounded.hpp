@@ -589,19 +589,26 @@ traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi
 // The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0). Where
 // s0 leaves the window or the rounding test fails, the wider type's step or the
 // exact decision decides, from the best candidate at hand.
+// T's rounding of the root from the step of `which` (not free flight) on u, dy,
+// phi in the fast window: where s0 lies in the window too and the rounding test
+// (or, in (A.31), the signs at the candidate's midpoints) decides. Otherwise
+// empty, and step.s0 the best candidate at hand.
+template <class T>
+[[gnu::always_inline]] inline std::optional<T> rounded_by_step(rounded_form::fixed_step<T>& step, contact_case which,
+                                                               const T& u, const T& dy, const T& phi) {
+  if (!in_fast_window(step.s0, false)) [[unlikely]] return std::nullopt;
+  T rounded;
+  if (rounded_form::rounds_alike(step, rounded)) [[likely]] return rounded;
+  step.s0 += step.delta;  // the nearer candidate
+  if (which == contact_case::contact) return rounded_form::contact_rounded_by_midpoints(step.s0, u, dy, phi);
+  return std::nullopt;
+}
+
 template <class T>
 traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
   auto [step, which] = fixed_bound_step(u, dy, phi);
   if (which == contact_case::free) return {{step.s0, which}, false};
-  if (in_fast_window(step.s0, false)) [[likely]] {
-    T rounded;
-    if (rounded_form::rounds_alike(step, rounded)) [[likely]] return {{rounded, which}, false};
-    step.s0 += step.delta;  // the nearer candidate
-    if (which == contact_case::contact) {
-      if (auto decided = rounded_form::contact_rounded_by_midpoints(step.s0, u, dy, phi))
-        return {{*decided, which}, false};
-    }
-  }
+  if (auto decided = rounded_by_step(step, which, u, dy, phi)) [[likely]] return {{*decided, which}, false};
   const solution<T> start{step.s0, which};
   return rounded_beyond_the_step<T>(u, dy, phi, &start);
 }
@@ -689,45 +696,107 @@ traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi
 //          f(e1) >= e1 u / 2 - phi (dy + u)^2 = 0: Q(-u) > 0 >= Q(-u + e1), so the smaller
 //          root lies in (-u, -u + e1], e <= 2 phi u; r = -u.
 //   (A.32), u < 0: s = (|u| + sqrt(u^2 + 4 phi dy^2)) / 2 <= |u| + phi dy^2 / |u|; r = -u.
-// Each bound is computed on scaled<T> (no under- or overflow; a product, a
-// quotient or a square root rounds once, relative 2^-p) with a factor of room
-// for those roundings (4 for 3, 8 for 4, 2 for 1), and compared exactly.
+// Each bound is a power of two, from the binades b of the inputs (x in [2^b,
+// 2^(b+1)), binade_of; a zero phi below the least subnormal's; 3 < 2^2,
+// sqrt(phi) >= 2^floor(b/2)), so no arithmetic rounds. The gap below |r| is at
+// least 2^(b - p), b = binade_of(r): an ulp of r's binade, or of the one below
+// where |r| is a power of two; among the subnormals, more. So where b - p exceeds
+// the bound's exponent, the sliver is narrower than half of either gap.
 // `which` is the exact case of a valid input, not free flight.
 template <class T>
 std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, contact_case which) {
-  using S = scaled<T>;
   using std::fabs;
   using std::isfinite;
-  const S a(fabs(u)), b(fabs(dy)), stiffness(phi), largest(max_of(T(fabs(u)), T(fabs(dy))));
+  constexpr int p = std::numeric_limits<T>::digits;
+  const int phi_binade = phi == 0 ? std::numeric_limits<T>::min_exponent - p - 1 : binade_of(phi);
+  const int largest = binade_of(max_of(T(fabs(u)), T(fabs(dy))));  // M's
   T r;
-  S bound;
+  int sliver;  // the root lies within 2^sliver of r
   if (which == contact_case::contact) {
     if (phi >= T(1)) {
       r = T(2) * dy;
-      bound = S(4) * largest / stiffness;
+      sliver = largest + 3 - phi_binade;
     } else {
       r = -u;
-      bound = S(4) * stiffness * largest;
+      sliver = phi_binade + largest + 4;
     }
   } else if (which == contact_case::impact) {
     if (phi >= T(1)) {
       r = dy;
-      bound = S(8) * largest / square_root(stiffness);
+      sliver = largest + 3 - (phi_binade >> 1);
     } else if (phi <= T(0.25)) {
       r = -u;
-      bound = S(4) * stiffness * a;
+      sliver = phi_binade + binade_of(u) + 3;
     } else {
       return std::nullopt;
     }
   } else {  // release
     if (!(u < 0)) return std::nullopt;
     r = -u;
-    bound = S(2) * stiffness * b * b / a;
+    sliver = phi_binade + 2 * binade_of(dy) + 4 - binade_of(u);
   }
   if (r == 0 || !isfinite(r)) return std::nullopt;
-  const T magnitude = fabs(r), gap = magnitude - next_down(magnitude);
-  if (S(gap) > S(2) * bound) return r;
+  if (binade_of(r) - p > sliver) return r;
   return std::nullopt;
+}
+
+// ---- moved into the window: (A.2)'s symmetries --------------------------------------
+//
+// (A.2) is homogeneous in u, dy and s: s(2^k u, 2^k dy, phi) = 2^k s(u, dy, phi), in
+// the same case (each criterion is the sign of a sum homogeneous in u and dy). And
+// (A.32)'s polynomial s^2 + u s - phi dy^2 is the same when dy moves by 2^j and phi
+// by 2^-2j, so a release's root is too (its case, decided before, does not move).
+// Where these moves bring u, dy, phi and s0 into the fast window, the fixed-bound
+// step rounds the moved root 2^k s to r', and r = 2^-k r' is the root's rounding
+// wherever r is a finite normal T: the T values and midpoints around r' move with
+// it onto those around r (at the least normal value the moved frame's lower
+// midpoint lies above T's, so a root above it is above T's too). Otherwise empty.
+template <class T>
+rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy, const T& phi) {
+  if (which == contact_case::impact) return rounded_form::impact_step(u, dy, phi);
+  if (which == contact_case::contact) return rounded_form::contact_step(u, dy, phi);
+  return rounded_form::release_step(u, dy, phi);
+}
+
+// For double, the type whose window the report's extreme inputs leave (long
+// double's and float128's hold all but the ends of their ranges). Two more
+// cases are decided: a moved rounding beyond the largest double means a root at
+// or beyond the overflow threshold, which rounds to infinity; and a release
+// whose u lies too far below 2^j dy for the window: its root moves by at most
+// |u| when u does (|ds/du| < 1), so the step runs with u = 0 and its margin
+// doubled, which covers that.
+inline std::optional<double> rounded_by_moves(double u, double dy, double phi, contact_case which) {
+  using S = scaled<double>;
+  constexpr int window = plain_window<double>;
+  int j = 0;  // the release's move of dy, which takes phi into [1, 4) (a zero phi stays zero)
+  if (which == contact_case::release) {
+    j = binade_of(phi) >> 1;
+  } else if (!in_fast_window(phi, true)) {
+    return std::nullopt;
+  }
+  // the larger of |u|, |dy| 2^j moved to binade window - 3, so that s0, below
+  // 3 max(|u|, |dy|) in every case, stays inside; the smaller must stay inside
+  // too (u and dy are not both zero outside free flight), but for the release's u
+  const int u_binade = u == 0 ? binade_of(dy) + j : binade_of(u);
+  const int dy_binade = dy == 0 ? u_binade : binade_of(dy) + j;
+  const int shift = window - 3 - std::max(u_binade, dy_binade);
+  const bool u_negligible = which == contact_case::release && u_binade + shift < -window;
+  if (std::min(u_binade, dy_binade) + shift < -window && !u_negligible) return std::nullopt;
+  const double moved_u = u_negligible ? 0.0 : S::shifted(u, shift);
+  const double moved_dy = S::shifted(dy, shift + j), moved_phi = S::shifted(phi, -2 * j);
+  auto step = step_of_case(which, moved_u, moved_dy, moved_phi);
+  if (u_negligible) {
+    // 2^j dy leads at binade window - 3 and phi moved is at least 1, so s0 >= 2^(window - 4),
+    // and the margin K |s0| lies far above |u| moved, below 2^(1 - window)
+    static_assert(window - 4 + rounded_form::fixed_bounds_of<double>::release > 1 - window);
+    step.margin += step.margin;
+  }
+  const auto moved = rounded_by_step(step, which, moved_u, moved_dy, moved_phi);
+  if (!moved) return std::nullopt;
+  const int binade_back = binade_of(*moved) - shift;
+  if (binade_back >= std::numeric_limits<double>::max_exponent) return std::copysign(HUGE_VAL, *moved);
+  if (binade_back < std::numeric_limits<double>::min_exponent - 1) return std::nullopt;
+  return S::shifted(*moved, -shift);
 }
 
 // Everything but double's common case, out of line so that its caller stays small.
@@ -741,8 +810,9 @@ template <class T>
     return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
   } else {
     // Outside the window where the Newton step is proven (invalid input
-    // included), or for a type with no proven bound, the wider type's step or
-    // the exact decision.
+    // included), or for a type with no proven bound: the value beside an input,
+    // double's moves into the window, else the wider type's step or the exact
+    // decision.
     if constexpr (rounded_form::has_fixed_bounds<T>) {
       if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
     }
@@ -750,6 +820,9 @@ template <class T>
       const contact_case which = exact_case(u, dy, phi);
       if (which == contact_case::free) return {{T(-u), which}, false};  // (A.29) exact
       if (auto beside = rounded_beside_an_input(u, dy, phi, which)) return {{*beside, which}, false};
+      if constexpr (std::is_same_v<T, double>) {
+        if (auto moved = rounded_by_moves(u, dy, phi, which)) return {{*moved, which}, false};
+      }
     }
     return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
   }

@@ -258,7 +258,10 @@ template <class T>
 // binade_of(x), and |phi dy| in [2^(bp + bd), 2^(bp + bd + 2)): a term whose
 // least magnitude is 2^lo with lo above every other term's bound 2^hi
 // exceeds the other two together (below 2 2^hi <= 2^lo), so its sign is the
-// sum's. A zero u or phi is a term that is absent.
+// sum's. A zero u or phi is a term that is absent. Otherwise u + dy rounded,
+// with b = binade_of(fl(u + dy)) (max_exponent for an infinite one), has the
+// sign of the exact u + dy, whose magnitude is at least 2^b - 2^(b-p); where b
+// lies above phi dy's bound, that outweighs phi dy (u and dy cancelling, mostly).
 template <class T>
   requires detail::hardware_binary<T>
 int sign_of_dominant_binade(const T& u, const T& dy, const T& phi) {
@@ -269,6 +272,8 @@ int sign_of_dominant_binade(const T& u, const T& dy, const T& phi) {
   if (u_least > std::max(dy_bound, product_bound)) return u > 0 ? 1 : -1;
   if (dy_least > std::max(u_bound, product_bound)) return 1;
   if (product_least > std::max(u_bound, dy_bound)) return -1;
+  const T sum = u + dy;
+  if (sum != 0 && binade_of(sum) > product_bound) return sum > 0 ? 1 : -1;
   return 0;
 }
 

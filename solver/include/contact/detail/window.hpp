@@ -119,6 +119,13 @@ int binade_of(const T& x) {
   return int(sizeof(bits) * 8 - 1) - std::countl_zero(magnitude) - (bias - 1 + significand_bits);
 }
 
+// floor(log2 |x|) for a finite non-zero x of the other types.
+template <class T>
+  requires(!hardware_binary<T>)
+int binade_of(const T& x) {
+  return int(scaled<T>(x).exponent - 1);
+}
+
 // The phi bands: outside the plain window, (A.2)'s homogeneity in (u, dy)
 // lets u and dy move by a power of two to wherever phi leaves room for them.
 // phi's binades are cut into bands of 2^band_bits; for each band, `top` is
