@@ -620,15 +620,16 @@ TEST(RoundedWiderStep, DecidesDoubleBeyondItsWindow) {
 
 // ---- beside an input: stiff and soft phi far beyond the window --------------------
 
-// Per case, how many of `count` inputs (draw) the shortcut `decide` (given the exact
-// case) rounds, each checked against the reference.
-struct beside_tally {
+// Per case, how many of `count` inputs (draw) a shortcut `decide` (given the exact
+// case: the value beside an input, or the moves below) rounds, each checked
+// against the reference.
+struct decided_tally {
   long decided[5] = {}, seen[5] = {}, wrong = 0;
 };
 
 template <class T, class Draw, class Decide>
-beside_tally decided_against_reference(int count, Draw draw, Decide decide) {
-  beside_tally t;
+decided_tally decided_against_reference(int count, Draw draw, Decide decide) {
+  decided_tally t;
   for (int k = 0; k < count; ++k) {
     const auto [u, dy, phi] = draw();
     const auto exact = reference::solve(u, dy, phi);
@@ -648,7 +649,7 @@ beside_tally decided_against_reference(int count, Draw draw, Decide decide) {
 // Physical u and dy (some of them powers of two, where the gap below halves) with
 // phi far above or below the plain window, as the phi scene draws them.
 template <class T>
-beside_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
+decided_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
   std::mt19937_64 random(seed);
   auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
   auto draw = [&] {
@@ -740,7 +741,7 @@ TEST(RoundedWiderStep, LeavesTiesBeyondTheWindowToTheExactDecision) {
 
 // u and dy of either sign, their binades drawn from [u_low, u_high] and [dy_low,
 // dy_high], phi's from [phi_low, phi_high]: per case, how many the moves decide.
-beside_tally moves_on(std::uint64_t seed, int count, std::array<int, 2> u_binades, std::array<int, 2> dy_binades,
+decided_tally moves_on(std::uint64_t seed, int count, std::array<int, 2> u_binades, std::array<int, 2> dy_binades,
                       std::array<int, 2> phi_binades) {
   std::mt19937_64 random(seed);
   auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };

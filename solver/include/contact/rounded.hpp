@@ -557,14 +557,22 @@ struct cased_step {
   contact_case which;
 };
 
+// The step of a case decided before (not free flight).
+template <class T>
+rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy, const T& phi) {
+  if (which == contact_case::impact) return rounded_form::impact_step(u, dy, phi);
+  if (which == contact_case::contact) return rounded_form::contact_step(u, dy, phi);
+  return rounded_form::release_step(u, dy, phi);
+}
+
 template <class T>
 cased_step<T> fixed_bound_step(const T& u, const T& dy, const T& phi) {
   if (dy <= 0) {
     if (u <= -dy) return {{T(-u), T(0), T(0)}, contact_case::free};  // (A.29) s = -u, exact
-    return {rounded_form::impact_step(u, dy, phi), contact_case::impact};
+    return {step_of_case(contact_case::impact, u, dy, phi), contact_case::impact};
   }
-  if (stays_in_contact<true>(u, dy, phi)) return {rounded_form::contact_step(u, dy, phi), contact_case::contact};
-  return {rounded_form::release_step(u, dy, phi), contact_case::release};
+  const contact_case which = stays_in_contact<true>(u, dy, phi) ? contact_case::contact : contact_case::release;
+  return {step_of_case(which, u, dy, phi), which};
 }
 
 // The wider type whose step stands in for T's where T's cannot decide: one with
@@ -586,9 +594,6 @@ struct wider_step<double> {
 template <class T>
 traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi, const solution<T>* start);
 
-// The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0). Where
-// s0 leaves the window or the rounding test fails, the wider type's step or the
-// exact decision decides, from the best candidate at hand.
 // T's rounding of the root from the step of `which` (not free flight) on u, dy,
 // phi in the fast window: where s0 lies in the window too and the rounding test
 // (or, in (A.31), the signs at the candidate's midpoints) decides. Otherwise
@@ -604,6 +609,9 @@ template <class T>
   return std::nullopt;
 }
 
+// The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0). Where
+// s0 leaves the window or the rounding test fails, the wider type's step or the
+// exact decision decides, from the best candidate at hand.
 template <class T>
 traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
   auto [step, which] = fixed_bound_step(u, dy, phi);
@@ -751,13 +759,6 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // wherever r is a finite normal T: the T values and midpoints around r' move with
 // it onto those around r (at the least normal value the moved frame's lower
 // midpoint lies above T's, so a root above it is above T's too). Otherwise empty.
-template <class T>
-rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy, const T& phi) {
-  if (which == contact_case::impact) return rounded_form::impact_step(u, dy, phi);
-  if (which == contact_case::contact) return rounded_form::contact_step(u, dy, phi);
-  return rounded_form::release_step(u, dy, phi);
-}
-
 // For double, the type whose window the report's extreme inputs leave (long
 // double's and float128's hold all but the ends of their ranges). Two more
 // cases are decided: a moved rounding beyond the largest double means a root at
