@@ -48,9 +48,7 @@ inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && s
 //    double instead (round_through_double).
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
-//    rounds as s0 + delta does. In (A.31), where a heavy cancellation widens the
-//    bound beyond that, the signs of R at the candidate's midpoints decide (as
-//    in step 3, but in T).
+//    rounds as s0 + delta does.
 // 3. Otherwise, and outside the exponent window where step 1 is proven, double
 //    takes steps 1 and 2 in long double where that is wider (wider_step); what
 //    is still undecided takes the exact decision: R is strictly increasing, so
@@ -314,7 +312,7 @@ template <class T>
 // ---- one Newton step with a fixed, proven bound ---------------------------------
 //
 // The step below comes with a bound K |s0| on |s0 + delta - s*|, K a constant per
-// case and per significand width ((A.31) adds K' phi dy / (1 + phi), below):
+// case and per significand width ((A.30)'s grows as its two roots merge, below):
 // proofs/gappa/rounded_<case>.g proves the
 // relative bound from the stable path's proven bound on |s0 - s*|
 // (claimed_bounds.txt, proven for 53, 64 and 113 bits), and gappa_rounded checks
@@ -333,15 +331,15 @@ template <int Digits>
 struct fixed_bound_exponents {};
 template <>
 struct fixed_bound_exponents<53> {  // binary64
-  static constexpr int contact = -99, contact_cancellation = -99, impact = -97, release = -96;
+  static constexpr int contact = -100, impact = -97, release = -96;
 };
 template <>
 struct fixed_bound_exponents<64> {  // x87 extended
-  static constexpr int contact = -121, contact_cancellation = -121, impact = -119, release = -119;
+  static constexpr int contact = -122, impact = -119, release = -119;
 };
 template <>
 struct fixed_bound_exponents<113> {  // binary128
-  static constexpr int contact = -219, contact_cancellation = -219, impact = -217, release = -217;
+  static constexpr int contact = -220, impact = -217, release = -217;
 };
 
 template <class T>  // (T, or the lanes of T)
@@ -375,67 +373,26 @@ struct fixed_step {
   T s0, delta, margin;
 };
 
-// (A.31): Q(s) = (1 + phi) s - (2 phi dy - u); Q(s0) = phi (2 dy - s0) - (u + s0) exactly
-// as (m.high - w.high) + (m.low + phi g.low - w.low), m.high and w.high close. The
-// residual's roundings scale with the cancelling terms, of order phi dy / (1 + phi),
-// not with s0, so the margin has a term of each: K |s0| + K' phi dy / (1 + phi).
-// Like every step below, written once for T and for the batch kernels' lanes.
+// (A.31): Q(s) = (1 + phi) s - N, N = 2 phi dy - u, is linear, so Newton's step
+// has no error of its own: delta = (N - (1 + phi) s0) / (1 + phi), and only the
+// residual's roundings count. N and (1 + phi) s0 are each an exact sum of T values
+// (products and sums without error); their leading terms agree to a few ulps, and
+// what rounds is of order 2^-2p N, where 2 phi dy and u cancel as well (gap.low is
+// zero then, by Sterbenz's lemma). So the margin is K |s0| however deep the
+// cancellation. Like every step below, written once for T and for the batch
+// kernels' lanes.
 template <class T>
 fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
-  using bounds = fixed_bounds_of<T>;
   const T s0 = stable_form::contact(u, dy, phi);
   const T inverse = T(1) / T(T(1) + phi);
-  const auto g = detail::two_sum(T(T(2) * dy), T(-s0));
-  const auto m = product(phi, g.high);
-  const auto w = detail::two_sum(u, s0);
-  const T r = (m.high - w.high) + ((m.low + phi * g.low) - w.low);
-  const T margin = power_of_two<T, bounds::contact>() * fabs(s0) +
-                   power_of_two<T, bounds::contact_cancellation>() * (phi * dy * inverse);
-  return {s0, r * inverse, margin};
-}
-
-// The sign of (A.31)'s R(m) = (1 + phi) m + u - 2 phi dy at m = c + h (h a power of
-// two, half the gap from c to a neighbour): an exact sum of products of T values,
-// as the exact decision's, but in T itself, since with u, dy, phi in the fast
-// window and c inside it (checked) none of these products or sums over- or
-// underflows (docs/equations.md section 7).
-template <class T>
-int contact_residual_sign(const T& c, const T& h, const T& u, const T& dy, const T& phi) {
-  const auto phi_c = detail::two_prod(phi, c);
-  const auto push = detail::two_prod(phi, T(-2 * dy));
-  const T terms[8] = {c, h, phi_c.high, phi_c.low, T(phi * h), u, push.high, push.low};
-  return detail::sign_of_exact_sum(terms);
-}
-
-// Where the margin of a heavy cancellation is too wide for the rounding test: the
-// candidate c is the rounded root when R is negative at the midpoint below it and
-// positive at the one above (R is increasing); otherwise the neighbour on the
-// root's side is tried, a few times (the step itself may be some ulps off there).
-// Empty when a sign is zero (a tie, which the exact decision sends to the even
-// neighbour), after the last try, when an upper midpoint lies beyond dy, on
-// (A.32)'s side, or when c has left the window (only a cancellation of far more
-// than p bits can move it that far).
-template <class T>
-std::optional<T> contact_rounded_by_midpoints(T c, const T& u, const T& dy, const T& phi) {
-  constexpr int tries = 4;
-  for (int i = 0; i < tries; ++i) {
-    const T above = detail::next_up(c), below = detail::next_down(c);
-    if (!(above <= dy) || !detail::in_fast_window(c, false)) return std::nullopt;
-    const int at_above = contact_residual_sign(c, T((above - c) / 2), u, dy, phi);
-    if (at_above < 0) {
-      c = above;
-      continue;
-    }
-    const int at_below = contact_residual_sign(c, T((below - c) / 2), u, dy, phi);
-    if (at_below > 0) {
-      c = below;
-      continue;
-    }
-    if (at_above > 0 && at_below < 0) return c;
-    return std::nullopt;
-  }
-  return std::nullopt;
+  const auto push = product(phi, T(T(2) * dy));
+  const auto gap = detail::two_sum(push.high, T(-u));
+  const auto numerator = detail::two_sum(gap.high, push.low);  // N = numerator + gap.low
+  const auto denominator = detail::two_sum(T(1), phi);
+  const auto slope = product(s0, denominator.high);  // (1 + phi) s0 = slope + denominator.low s0
+  const T r = (numerator.high - slope.high) + (((numerator.low + gap.low) - slope.low) - denominator.low * s0);
+  return {s0, r * inverse, power_of_two<T, fixed_bounds_of<T>::contact>() * fabs(s0)};
 }
 
 // (A.30): Q(s) = s (s + u) + phi (dy - s)^2, Q'(s*) = -sqrt(disc). Newton's square
@@ -594,18 +551,15 @@ struct wider_step<double> {
 template <class T>
 traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi, const solution<T>* start);
 
-// T's rounding of the root from the step of `which` (not free flight) on u, dy,
-// phi in the fast window: where s0 lies in the window too and the rounding test
-// (or, in (A.31), the signs at the candidate's midpoints) decides. Otherwise
-// empty, and step.s0 the best candidate at hand.
+// T's rounding of the root from a step on u, dy, phi in the fast window: where s0
+// lies in the window too and the rounding test decides. Otherwise empty, and
+// step.s0 the best candidate at hand.
 template <class T>
-[[gnu::always_inline]] inline std::optional<T> rounded_by_step(rounded_form::fixed_step<T>& step, contact_case which,
-                                                               const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline std::optional<T> rounded_by_step(rounded_form::fixed_step<T>& step) {
   if (!in_fast_window(step.s0, false)) [[unlikely]] return std::nullopt;
   T rounded;
   if (rounded_form::rounds_alike(step, rounded)) [[likely]] return rounded;
   step.s0 += step.delta;  // the nearer candidate
-  if (which == contact_case::contact) return rounded_form::contact_rounded_by_midpoints(step.s0, u, dy, phi);
   return std::nullopt;
 }
 
@@ -616,7 +570,7 @@ template <class T>
 traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
   auto [step, which] = fixed_bound_step(u, dy, phi);
   if (which == contact_case::free) return {{step.s0, which}, false};
-  if (auto decided = rounded_by_step(step, which, u, dy, phi)) [[likely]] return {{*decided, which}, false};
+  if (auto decided = rounded_by_step(step)) [[likely]] return {{*decided, which}, false};
   const solution<T> start{step.s0, which};
   return rounded_beyond_the_step<T>(u, dy, phi, &start);
 }
@@ -792,7 +746,7 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
     static_assert(window - 4 + rounded_form::fixed_bounds_of<double>::release > 1 - window);
     step.margin += step.margin;
   }
-  const auto moved = rounded_by_step(step, which, moved_u, moved_dy, moved_phi);
+  const auto moved = rounded_by_step(step);
   if (!moved) return std::nullopt;
   const int binade_back = binade_of(*moved) - shift;
   if (binade_back >= std::numeric_limits<double>::max_exponent) return std::copysign(HUGE_VAL, *moved);
