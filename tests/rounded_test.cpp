@@ -534,6 +534,21 @@ TYPED_TEST(RoundedFixedStep, DecidesOrdinaryInputsWithoutTheExactDecision) {
   }
 }
 
+// float's fast path (the stable formulas in double, both ends of the bound rounded to
+// float) decides beyond float's range and among its subnormals too: where both ends
+// round to infinity, or to one subnormal, so does the root.
+TEST(RoundedFloat, FastPathDecidesOverflowAndSubnormals) {
+  const float overflow[3] = {-3e38f, 1e38f, 100.0f};  // (A.32), s about 1.2e39
+  const float subnormal[3] = {-1e-40f, 1e-30f, 1e-10f};  // (A.31), s about 1e-40
+  for (const auto& x : {overflow, subnormal}) {
+    const auto traced = detail::solve_rounded_traced(x[0], x[1], x[2]);
+    EXPECT_FALSE(traced.exact_decision) << x[0] << " " << x[1] << " " << x[2];
+    EXPECT_TRUE(correctly_rounded(traced.result.s, reference::solve(x[0], x[1], x[2]), x[0], x[1], x[2]));
+  }
+  EXPECT_TRUE(std::isinf(solve_rounded(overflow[0], overflow[1], overflow[2]).s));
+  EXPECT_EQ(std::fpclassify(solve_rounded(subnormal[0], subnormal[1], subnormal[2]).s), FP_SUBNORMAL);
+}
+
 
 // ---- double beyond its window: the wider type's step ------------------------------
 

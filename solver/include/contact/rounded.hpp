@@ -452,10 +452,15 @@ bool rounds_alike(const fixed_step<T>& step, T& rounded) {
 
 // float: the stable path's formulas run in double. Their proven bounds
 // (proofs/claimed_bounds.txt: at most 3.01 ulps of double at the root, every
-// branch, before the clamps) put the root within 2^-49 |s| of the double result:
-// float inputs lie deep inside double's plain window, so every intermediate and
-// the root are normal doubles. The float midpoints are exact doubles.
-inline bool round_through_double(const float& u, const float& dy, const float& phi, solution<float>& out) {
+// branch, before the clamps) put the root within 2^-50.4 |s| of the double
+// result s: float inputs lie deep inside double's plain window, so every
+// intermediate and the root are normal doubles. s -+ 2^-49 |s|, each rounded
+// once in double, still enclose the root, and rounding to float is monotonic
+// (overflow and the subnormals included): where both ends round to one float,
+// so does the root. Both ends have the sign of s, which is the root's (the bound
+// is relative), so a zero has the right sign; a zero s is an exact (A.31) root, +0.
+[[gnu::always_inline]] inline bool round_through_double(const float& u, const float& dy, const float& phi,
+                                                        solution<float>& out) {
   const double wide_u = u, wide_dy = dy, wide_phi = phi;
   double s;
   if (dy <= 0) {
@@ -473,12 +478,9 @@ inline bool round_through_double(const float& u, const float& dy, const float& p
     s = stable_form::release(wide_u, wide_dy, wide_phi);
   }
   const double bound = std::fabs(s) * 0x1p-49;
-  const float rounded = static_cast<float>(s);
-  out.s = rounded;  // the exact decision's candidate if the test below fails
-  if (!(std::fabs(rounded) < std::numeric_limits<float>::max())) return false;
-  const double above = (double(rounded) + double(detail::ulp_steps(rounded, 1))) / 2;
-  const double below = (double(rounded) + double(detail::ulp_steps(rounded, -1))) / 2;
-  return s + bound < above && s - bound > below;
+  const float below = static_cast<float>(s - bound), above = static_cast<float>(s + bound);
+  out.s = above;  // the exact decision's candidate if the test below fails
+  return below == above;
 }
 
 }  // namespace rounded_form
@@ -784,13 +786,19 @@ template <class T>
 }
 
 // solve_rounded, and whether it needed the exact decision (for the tests and
-// the measurements of the slow path's share).
+// the measurements of the slow path's share). Inline, with float's common case:
+// a float result returned from a call travels through memory in pieces of
+// other sizes, a store-forwarding stall as long as float's whole step.
 template <class T>
-traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
   static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
                                       "long double and float128 only");
   if constexpr (std::is_same_v<T, double>) {
     if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound(u, dy, phi);
+  } else if constexpr (std::is_same_v<T, float>) {
+    solution<float> result;
+    if (!reject_invalid(u, dy, phi) && rounded_form::round_through_double(u, dy, phi, result)) [[likely]]
+      return {result, false};
   }
   return solve_rounded_general(u, dy, phi);
 }
