@@ -3,7 +3,8 @@
 // against MPFR's, rounded once in the same format (its precision, exponent
 // range and subnormals): on random operands of every alignment of the product
 // and the addend, and on hard ones (cancellation, results among the
-// subnormals, overflow, exact zeros and ties).
+// subnormals, overflow, exact zeros and ties); and binary128's TwoSum in
+// integers against Knuth's and MPFR's.
 #include <mpfr.h>
 
 // MPFR's binary128 conversions, declared with the __float128 that GCC and clang
@@ -14,6 +15,8 @@ extern "C" __float128 mpfr_get_float128(mpfr_srcptr, mpfr_rnd_t);
 #include <bit>
 #include <cstdint>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "harness.hpp"
 
@@ -281,6 +284,63 @@ TEST(EmulatedFma, Float128MatchesMpfrOnRandomOperands) {
 TEST(EmulatedFma, Float128MatchesMpfrOnHardOperands) {
   draws<float128> d(4);
   EXPECT_EQ(mismatches<float128>(100000, [&](long i) { return d.hard_operands(int(i)); }), 0);
+}
+
+// binary128's TwoSum in integers (detail::two_sum_in_integers, which two_sum
+// calls for it): the pair Knuth's TwoSum gives, bit for bit (zeros' signs and
+// the fallbacks' infinities and NaNs included), whose sum is MPFR's a + b
+// rounded once in the format.
+template <class Draw>
+long two_sum_mismatches(long count, Draw draw) {
+  long wrong = 0;
+  for (long i = 0; i < count; ++i) {
+    const auto [a, b] = draw(i);
+    const auto pair = detail::two_sum_in_integers(a, b), knuth = detail::knuth_two_sum(a, b);
+    using std::isnan;
+    auto same = [](const float128& x, const float128& y) {
+      return (isnan(x) && isnan(y)) || format<float128>::bits(x) == format<float128>::bits(y);
+    };
+    const bool right = same(pair.high, knuth.high) && same(pair.low, knuth.low) &&
+                       same(pair.high, mpfr_fma_in(a, float128(1), b));
+    if (!right && ++wrong <= 5)
+      ADD_FAILURE() << "two_sum(" << text(a) << ", " << text(b) << ") = " << text(pair.high) << " + " << text(pair.low)
+                    << ", Knuth's: " << text(knuth.high) << " + " << text(knuth.low);
+  }
+  return wrong;
+}
+
+// operands a binade or two to 130 binades apart (the frame's limit is 120), either sign
+TEST(EmulatedTwoSum, Float128IsKnuthsOnRandomOperands) {
+  draws<float128> d(5);
+  EXPECT_EQ(two_sum_mismatches(1000000,
+                               [&](long) {
+                                 const int e = d.in(-200, 200);
+                                 return std::pair{d.normal(e), d.normal(e + d.in(-130, 130))};
+                               }),
+            0);
+}
+
+// zeros of both signs, infinities and NaN beside each other and beside normal numbers
+TEST(EmulatedTwoSum, Float128IsKnuthsOnSpecialOperands) {
+  const float128 zero = 0, inf = std::numeric_limits<float128>::infinity();
+  const float128 special[] = {zero, float128(-zero), float128(3), (std::numeric_limits<float128>::min)() / 4,
+                              inf, float128(-inf), std::numeric_limits<float128>::quiet_NaN()};
+  std::vector<std::pair<float128, float128>> pairs;
+  for (const auto& a : special)
+    for (const auto& b : special) pairs.emplace_back(a, b);
+  EXPECT_EQ(two_sum_mismatches(long(pairs.size()), [&](long i) { return pairs[std::size_t(i)]; }), 0);
+}
+
+// the fma's hard kinds as sums ab + c: cancellation, exact zeros, signed zeros,
+// subnormals, overflow, ties, powers of two, the whole range
+TEST(EmulatedTwoSum, Float128IsKnuthsOnHardOperands) {
+  draws<float128> d(6);
+  EXPECT_EQ(two_sum_mismatches(100000,
+                               [&](long i) {
+                                 const operands<float128> o = d.hard_operands(int(i));
+                                 return std::pair{float128(o.a * o.b), o.c};
+                               }),
+            0);
 }
 
 }  // namespace

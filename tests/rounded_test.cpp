@@ -353,6 +353,17 @@ TEST(RoundedExactDecision, WalksUpToInfinity) {
   EXPECT_GE(overflowing, 5);
 }
 
+// A root within half an ulp above -max, from -max: the walk's step down reads the
+// midpoint below -max, beyond which T's next value would lie (an impact with u =
+// max and a soft phi: s = -u + e, 0 < e <= 2 phi u, far below an ulp of max).
+TEST(RoundedExactDecision, WalksDownToTheLargestNegativeValue) {
+  const double max = std::numeric_limits<double>::max(), u = max, dy = -1.0, phi = 0x1p-60;
+  const solution<double> from{-max, contact_case::impact};
+  const auto walked = detail::rounded_by_exact_decision(u, dy, phi, &from);
+  EXPECT_EQ(walked.result.s, -max);
+  EXPECT_TRUE(correctly_rounded(walked.result.s, reference::solve(u, dy, phi), u, dy, phi));
+}
+
 // Ties reached after walking: from 5 ulps below and 5 ulps above the tie, the
 // walk crosses the midpoints one by one and stops at the tie's even neighbour.
 TEST(RoundedExactDecision, WalksToATieFromEitherSide) {

@@ -280,13 +280,15 @@ inline constexpr bool fma_instruction = false;
 #endif
 
 // a * b = high + low exactly (barring underflow of low), inline: the hardware
-// fma where the target has one (the batch kernels' lanes always do), else
-// Dekker's product on Veltkamp's split (a library fma call, on the baseline
-// x86-64 target, is slower than the whole split; x87 long double and float128
-// have no hardware fma at all).
+// fma where the target has one (the batch kernels' lanes always do), float128's
+// fma in integers (Dekker's seventeen operations in software cost four times
+// as much), else Dekker's product on Veltkamp's split (a library fma call, on
+// the baseline x86-64 target, is slower than the whole split; x87 long double
+// has no hardware fma, and its own split is faster than its fma in integers).
 template <class T>
 [[gnu::always_inline]] inline detail::exact_pair<T> product(const T& a, const T& b) {
-  if constexpr (detail::lane_vector<T> || (fma_instruction && detail::hardware_binary<T>)) {
+  if constexpr (detail::lane_vector<T> || (fma_instruction && detail::hardware_binary<T>) ||
+                (detail::emulated_format<T>::available && !detail::product_error_by_dekker<T>)) {
     return detail::two_prod(a, b);
   } else {
     const T high = a * b;

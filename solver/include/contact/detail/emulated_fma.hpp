@@ -15,6 +15,7 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <boost/multiprecision/number.hpp>
 
@@ -171,6 +172,19 @@ inline uint256 minus(const uint256& a, const uint256& b) {  // a >= b
   return {a.high - b.high - uint128(a.low < b.low), a.low - b.low};
 }
 
+// a + b for magnitudes a, b with signs: the magnitude and its sign (that of
+// an exact zero is the caller's to choose)
+struct signed_uint256 {
+  uint256 magnitude;
+  bool negative;
+};
+
+inline signed_uint256 signed_sum(const uint256& a, bool a_negative, const uint256& b, bool b_negative) {
+  if (a_negative == b_negative) return {plus(a, b), a_negative};
+  if (less(a, b)) return {minus(b, a), b_negative};
+  return {minus(a, b), a_negative};
+}
+
 // the index of the leading bit (-1 for 0), from countl_zero, which is 64 for a zero word
 inline int top_bit(uint128 v) {
   const int high_zeros = std::countl_zero(std::uint64_t(v >> 64)), low_zeros = std::countl_zero(std::uint64_t(v));
@@ -180,6 +194,56 @@ inline int top_bit(uint128 v) {
 inline int top_bit(const uint256& x) {
   const int high = top_bit(x.high), low = top_bit(x.low), high_set = -int(high >= 0);
   return ((128 + high) & high_set) | (low & ~high_set);
+}
+
+// TwoSum's pair, a + b rounded to nearest (ties to even) and the exact rest,
+// in integer arithmetic, for binary128 (two_sum calls it). With both operands
+// normal and x the one whose last bit lies higher, by d bits: for d <= 120
+// the exact sum fits a 256-bit frame whose bit 0 is y's last bit (x's 113
+// bits shifted by d); it is rounded to 113 bits there, and the rest (below
+// 2^121, at most 113 bits wide: TwoSum's error is a binary128 value) is
+// packed as it is. For d > 120, |y| < 2^-8 ulp(x), so x + y rounds to x and
+// the rest is y. Zeros (the rest +0), other operands, a rest below the
+// normal binades and a sum that overflows take Knuth's TwoSum, so every pair
+// is the one TwoSum gives, bit for bit. x87 long double keeps TwoSum: its
+// additions are instructions.
+template <class T>
+exact_pair<T> two_sum_in_integers(const T& a, const T& b) {
+  using format = emulated_format<T>;
+  constexpr int p = format::digits;
+  unpacked_binary x, y;
+  if (!(format::unpack(a, x) & format::unpack(b, y))) [[unlikely]] {
+    using std::isfinite;
+    if ((a == 0 || b == 0) && isfinite(a) && isfinite(b)) return {T(a + b), T(0)};
+    return knuth_two_sum(a, b);
+  }
+  const bool swapped = x.exponent < y.exponent;
+  if (swapped) std::swap(x, y);
+  const int gap = x.exponent - y.exponent;
+  if (gap > 120) return swapped ? exact_pair<T>{b, a} : exact_pair<T>{a, b};
+  const uint256 x_frame = shifted_left({0, x.significand}, gap), y_frame{0, y.significand};
+  const auto [sum, negative] = signed_sum(x_frame, x.negative, y_frame, y.negative);
+  if ((sum.high | sum.low) == 0) return {T(0), T(0)};  // an exact cancellation: +0, as a + b
+  const int top = top_bit(sum);
+  const int drop = top + 1 - p;  // bits below the rounded sum's last one: at most 121
+  if (drop <= 0) {  // exact, unless the cancellation leaves the normal binades
+    if (y.exponent + top < 1 - wide_bias) [[unlikely]] return knuth_two_sum(a, b);
+    return {format::pack(negative, y.exponent + top, sum.low << -drop), T(0)};
+  }
+  uint128 significand = (sum.low >> drop) | (sum.high << (128 - drop));
+  const uint128 rest = sum.low & ((uint128(1) << drop) - 1), half = uint128(1) << (drop - 1);
+  const bool up = (rest > half) | ((rest == half) & ((significand & 1) != 0));
+  significand += uint128(up);
+  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
+  significand >>= carry;
+  const int binade = y.exponent + top + int(carry);
+  const uint128 low = up ? (uint128(1) << drop) - rest : rest;
+  const int low_top = top_bit(low);  // (-1 for an exact sum)
+  if ((binade > wide_bias) | ((low != 0) & (y.exponent + low_top < 1 - wide_bias))) [[unlikely]]
+    return knuth_two_sum(a, b);
+  if (low == 0) return {format::pack(negative, binade, significand), T(0)};
+  const uint128 low_significand = low_top >= p - 1 ? low >> (low_top - (p - 1)) : low << ((p - 1) - low_top);
+  return {format::pack(negative, binade, significand), format::pack(negative != up, y.exponent + low_top, low_significand)};
 }
 
 // a * b + c rounded once in integer arithmetic, for the types of
@@ -231,17 +295,8 @@ T fma_in_integers(const T& a, const T& b, const T& c) {
     return shift >= 0 ? shifted_left(v, shift) : shifted_right_sticky(v, -shift);
   };
   const uint256 p_frame = place(product, product_exponent), c_frame = place({0, z.significand}, z.exponent);
-  uint256 sum;
-  bool negative = product_negative;
-  if (product_negative == z.negative) {
-    sum = plus(p_frame, c_frame);
-  } else if (less(p_frame, c_frame)) {
-    sum = minus(c_frame, p_frame);
-    negative = z.negative;
-  } else {
-    sum = minus(p_frame, c_frame);
-    if ((sum.high | sum.low) == 0) return T(0);  // an exact cancellation: +0
-  }
+  const auto [sum, negative] = signed_sum(p_frame, product_negative, c_frame, z.negative);
+  if ((sum.high | sum.low) == 0) return T(0);  // an exact cancellation: +0
   const int top = top_bit(sum);
   int binade = frame + top;
   if (binade < least_binade) [[unlikely]] {  // subnormal or zero once rounded

@@ -26,12 +26,31 @@ struct exact_pair {
   T high, low;
 };
 
+// A binary128 class type (Boost's float128): its additions run in software,
+// and TwoSum's six of them cost more than the same pair found in integers
+// (emulated_fma.hpp, which every header that solves in float128 includes).
 template <class T>
-exact_pair<T> two_sum(const T& a, const T& b) {
+inline constexpr bool binary128_class =
+    !std::is_floating_point_v<T> && std::numeric_limits<T>::is_iec559 && std::numeric_limits<T>::digits == 113;
+
+template <class T>
+exact_pair<T> two_sum_in_integers(const T& a, const T& b);
+
+template <class T>
+exact_pair<T> knuth_two_sum(const T& a, const T& b) {
   T sum = a + b;
   T b_virtual = sum - a;
   T a_virtual = sum - b_virtual;
   return {sum, (a - a_virtual) + (b - b_virtual)};
+}
+
+template <class T>
+exact_pair<T> two_sum(const T& a, const T& b) {
+  if constexpr (binary128_class<T>) {
+    return two_sum_in_integers(a, b);
+  } else {
+    return knuth_two_sum(a, b);
+  }
 }
 
 // a + b == sum + error exactly, for |a| >= |b| (or a zero), barring overflow
