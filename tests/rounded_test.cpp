@@ -783,8 +783,7 @@ TEST(RoundedByMoves, StiffReleasesMovePhiIntoTheWindow) {
   const int release = static_cast<int>(contact_case::release);
   EXPECT_GT(t.seen[release], 4000);
   EXPECT_EQ(t.decided[release], t.seen[release]);
-  EXPECT_EQ(t.decided[static_cast<int>(contact_case::impact)], 0);
-  EXPECT_EQ(t.decided[static_cast<int>(contact_case::contact)], 0);
+  EXPECT_EQ(t.decided[static_cast<int>(contact_case::impact)], 0);  // (A.30) keeps phi where it is
 }
 
 // u and dy far above or below the window, phi inside it: homogeneity moves them
@@ -805,6 +804,31 @@ TEST(RoundedByMoves, FarMagnitudesMoveIntoTheWindow) {
 // Zeros move too, a root beyond the largest double is infinite, and a release's u far
 // below 2^j dy is left out; what cannot move, or cannot move back, is left to the
 // wider step.
+// (A.31) with phi beyond the window either way and u near the scale of 2 phi dy
+// (so that the value beside an input does not decide): phi moves near 2^220 or
+// 2^-220, which changes the root by less than 2^-219 of it, and the margin,
+// doubled, covers that. Every contact is decided, and correctly rounded (a root
+// among the subnormals is left to the wider step: EachEdgeIsDecidedOrLeftAsDocumented).
+TEST(RoundedByMoves, ContactsMovePhiIntoTheWindow) {
+  std::mt19937_64 engine(20261128);
+  std::uniform_real_distribution<double> unit(0, 1);
+  auto log2_uniform = [&](double low, double high) { return std::exp2(low + (high - low) * unit(engine)); };
+  int k = 0;
+  const auto t = decided_against_reference<double>(
+      4000,
+      [&] {
+        const double dy = log2_uniform(-30, 30);
+        const double phi = ++k % 2 ? log2_uniform(241, 900) : log2_uniform(-900, -241);  // normal roots
+        const double u = phi > 1 ? dy * phi * (1 + unit(engine)) : 2 * phi * dy * (4 * unit(engine) - 2);
+        return std::tuple{u, dy, phi};
+      },
+      [](double u, double dy, double phi, contact_case which) { return detail::rounded_by_moves(u, dy, phi, which); });
+  EXPECT_EQ(t.wrong, 0);
+  const int contact = static_cast<int>(contact_case::contact);
+  EXPECT_GT(t.seen[contact], 3000);
+  EXPECT_EQ(t.decided[contact], t.seen[contact]);
+}
+
 TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
   struct example {
     double u, dy, phi;
@@ -813,12 +837,17 @@ TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
   const example examples[] = {
       {0, 0x1p600, 0.5, true},                        // (A.31), u = 0
       {0x1p600, 0, 3, true},                          // (A.30), dy = 0: s = -u / (1 + phi)
-      {0x1p-600, 0x1p600, 0.5, false},                // u and dy too far apart
-      {0x1p700, 0x1p300, 0x1p300, false},             // (A.31), phi beyond the window
+      {0x1p600, -0x1p-600, 0.5, false},               // (A.30), u and dy too far apart
+      {0x1p-600, 0x1p600, 0.5, true},                 // (A.31), u far below dy: left out, the margin doubled
+      {0x1p600, 0x1p-600, 0x1p-300, true},            // (A.31), dy far below u: left out likewise
+      {0x1p-600, 0x1p600, 0, false},                  // (A.31) with phi = 0: s = -u, u not left out
+      {0x1p700, 0x1p300, 0x1p300, true},              // (A.31), phi beyond the window: to 2^220, u with it
+      {0x1p-300, 0x1p300, 0x1p-600, true},            // (A.31), phi below it: to 2^-220, dy the other way
+      {0x1p700, -0x1p300, 0x1p300, false},            // (A.30), phi beyond the window
       {0x1p-1050, 0x1p-1049, 0.5, false},             // (A.31), its root subnormal
       {0x1p700, 0x1p1000, 0x1p100, true},             // (A.32), its root beyond the largest double: infinity
       {0x1p-600, 0x1p300, 0x1p100, true},             // (A.32), u far below 2^j dy: left out, the margin doubled
-      {0x1p-600, 0x1p300, 0.5, false},                // (A.31), u as far below dy: not left out
+      {0x1p-600, 0x1p300, 0.5, true},                 // (A.31), u as far below dy: left out too
       {0x1.8p-600, 0x1p-600, 0x1.8p-1, false}};       // (A.31), a root of exactly 0
   for (const auto& x : examples) {
     const auto exact = reference::solve(x.u, x.dy, x.phi);

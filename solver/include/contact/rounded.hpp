@@ -712,44 +712,62 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // the same case (each criterion is the sign of a sum homogeneous in u and dy). And
 // (A.32)'s polynomial s^2 + u s - phi dy^2 is the same when dy moves by 2^j and phi
 // by 2^-2j, so a release's root is too (its case, decided before, does not move).
-// Where these moves bring u, dy, phi and s0 into the fast window, the fixed-bound
-// step rounds the moved root 2^k s to r', and r = 2^-k r' is the root's rounding
-// wherever r is a finite normal T: the T values and midpoints around r' move with
-// it onto those around r (at the least normal value the moved frame's lower
-// midpoint lies above T's, so a root above it is above T's too). Otherwise empty.
-// For double, the type whose window the report's extreme inputs leave (long
-// double's and float128's hold all but the ends of their ranges). Two more
+// (A.31)'s root N / (1 + phi), N = 2 phi dy - u, is nearly so when phi lies beyond the
+// window: phi moved to 2^j phi near 2^-220 with dy moved by 2^-j keeps N and gives
+// N / (1 + 2^j phi) = s (1 - e), 0 < e < 2^j phi < 2^-219; phi moved to 2^-j phi near
+// 2^220 with u moved by 2^-j gives 2^-j N / (1 + 2^-j phi) = s (1 - e'), 0 < e' <
+// 2^j / phi < 2^-219. Where these moves bring u, dy, phi and s0 into the fast
+// window, the fixed-bound step rounds the moved root 2^k s (or its near value, the
+// margin doubled, far above 2^-219 |s0|) to r', and r = 2^-k r' is the root's
+// rounding wherever r is a finite normal T: the T values and midpoints around r'
+// move with it onto those around r (at the least normal value the moved frame's
+// lower midpoint lies above T's, so a root above it is above T's too). Otherwise
+// empty. For double, the type whose window the report's extreme inputs leave
+// (long double's and float128's hold all but the ends of their ranges). Two more
 // cases are decided: a moved rounding beyond the largest double means a root at
-// or beyond the overflow threshold, which rounds to infinity; and a release
-// whose u lies too far below 2^j dy for the window: its root moves by at most
-// |u| when u does (|ds/du| < 1), so the step runs with u = 0 and its margin
-// doubled, which covers that.
+// or beyond the overflow threshold, which rounds to infinity; and u or dy too
+// far below the other for the window. A release's root moves by at most |u|
+// when u does (|ds/du| < 1), so its step runs with u = 0; in (A.31), with phi
+// (moved) in [2^-240, 2^241], the smaller of u and 2 phi dy lies below 2^-235 of
+// the larger, so N and the root move by less than that when it is dropped. The
+// margin, doubled, covers either.
 inline std::optional<double> rounded_by_moves(double u, double dy, double phi, contact_case which) {
   using S = scaled<double>;
   constexpr int window = plain_window<double>;
-  int j = 0;  // the release's move of dy, which takes phi into [1, 4) (a zero phi stays zero)
+  int u_move = 0, dy_move = 0, phi_move = 0;  // the moves above, before u and dy move by 2^shift
+  bool near_value = false;                    // (A.31)'s: the moved root is 2^shift s (1 - e)
   if (which == contact_case::release) {
-    j = binade_of(phi) >> 1;
+    dy_move = binade_of(phi) >> 1;  // phi into [1, 4) (a zero phi stays zero)
+    phi_move = -2 * dy_move;
   } else if (!in_fast_window(phi, true)) {
-    return std::nullopt;
+    if (which != contact_case::contact) return std::nullopt;
+    near_value = true;
+    if (phi > 1) {
+      u_move = phi_move = 220 - binade_of(phi);
+    } else {
+      phi_move = -220 - binade_of(phi);
+      dy_move = -phi_move;
+    }
   }
-  // the larger of |u|, |dy| 2^j moved to binade window - 3, so that s0, below
+  // the larger of |u|, |dy| moved to binade window - 3, so that s0, below
   // 3 max(|u|, |dy|) in every case, stays inside; the smaller must stay inside
   // too (u and dy are not both zero outside free flight), but for the release's u
-  const int u_binade = u == 0 ? binade_of(dy) + j : binade_of(u);
-  const int dy_binade = dy == 0 ? u_binade : binade_of(dy) + j;
+  const int u_binade = u == 0 ? binade_of(dy) + dy_move : binade_of(u) + u_move;
+  const int dy_binade = dy == 0 ? u_binade : binade_of(dy) + dy_move;
   const int shift = window - 3 - std::max(u_binade, dy_binade);
-  const bool u_negligible = which == contact_case::release && u_binade + shift < -window;
-  if (std::min(u_binade, dy_binade) + shift < -window && !u_negligible) return std::nullopt;
-  const double moved_u = u_negligible ? 0.0 : S::shifted(u, shift);
-  const double moved_dy = S::shifted(dy, shift + j), moved_phi = S::shifted(phi, -2 * j);
+  const bool u_negligible = (which == contact_case::release || (which == contact_case::contact && phi != 0)) &&
+                            u_binade + shift < -window;
+  const bool dy_negligible = which == contact_case::contact && dy_binade + shift < -window;
+  if (std::min(u_binade, dy_binade) + shift < -window && !u_negligible && !dy_negligible) return std::nullopt;
+  const double moved_u = u_negligible ? 0.0 : S::shifted(u, shift + u_move);
+  const double moved_dy = dy_negligible ? 0.0 : S::shifted(dy, shift + dy_move);
+  const double moved_phi = S::shifted(phi, phi_move);
   auto step = step_of_case(which, moved_u, moved_dy, moved_phi);
-  if (u_negligible) {
-    // 2^j dy leads at binade window - 3 and phi moved is at least 1, so s0 >= 2^(window - 4),
-    // and the margin K |s0| lies far above |u| moved, below 2^(1 - window)
-    static_assert(window - 4 + rounded_form::fixed_bounds_of<double>::release > 1 - window);
-    step.margin += step.margin;
-  }
+  // 2^j dy leads at binade window - 3 and phi moved is at least 1, so s0 >= 2^(window - 4),
+  // and the margin K |s0| lies far above |u| moved, below 2^(1 - window)
+  static_assert(window - 4 + rounded_form::fixed_bounds_of<double>::release > 1 - window);
+  static_assert(rounded_form::fixed_bounds_of<double>::contact > -219 + 1);  // K |s0| > 2^-219 |s|
+  if (u_negligible || dy_negligible || near_value) step.margin += step.margin;
   const auto moved = rounded_by_step(step);
   if (!moved) return std::nullopt;
   const int binade_back = binade_of(*moved) - shift;
