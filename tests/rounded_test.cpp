@@ -783,7 +783,7 @@ TEST(RoundedByMoves, StiffReleasesMovePhiIntoTheWindow) {
   const int release = static_cast<int>(contact_case::release);
   EXPECT_GT(t.seen[release], 4000);
   EXPECT_EQ(t.decided[release], t.seen[release]);
-  EXPECT_EQ(t.decided[static_cast<int>(contact_case::impact)], 0);  // (A.30) keeps phi where it is
+  EXPECT_EQ(t.decided[static_cast<int>(contact_case::impact)], 0);  // (u and |dy| too close for (A.30)'s move)
 }
 
 // u and dy far above or below the window, phi inside it: homogeneity moves them
@@ -829,6 +829,26 @@ TEST(RoundedByMoves, ContactsMovePhiIntoTheWindow) {
   EXPECT_EQ(t.decided[contact], t.seen[contact]);
 }
 
+// (A.30) with a stiff phi and u / phi far above |dy| (the root near -u / phi, where
+// the value beside dy does not decide): phi moves near 2^220 with u, which moves the root by
+// far less than the impact margin. Every such impact is decided, correctly rounded.
+TEST(RoundedByMoves, StiffImpactsMovePhiIntoTheWindow) {
+  std::mt19937_64 engine(20261129);
+  std::uniform_real_distribution<double> unit(0, 1);
+  auto log2_uniform = [&](double low, double high) { return std::exp2(low + (high - low) * unit(engine)); };
+  const auto t = decided_against_reference<double>(
+      4000,
+      [&] {
+        const double dy = -log2_uniform(-30, 30), phi = log2_uniform(241, 700);
+        return std::tuple{-dy * phi * log2_uniform(4, 250), dy, phi};  // u / phi >= 2^4 |dy|: s near -u / phi
+      },
+      [](double u, double dy, double phi, contact_case which) { return detail::rounded_by_moves(u, dy, phi, which); });
+  EXPECT_EQ(t.wrong, 0);
+  const int impact = static_cast<int>(contact_case::impact);
+  EXPECT_GT(t.seen[impact], 3000);
+  EXPECT_GT(t.decided[impact], t.seen[impact] * 99 / 100);
+}
+
 TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
   struct example {
     double u, dy, phi;
@@ -843,7 +863,9 @@ TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
       {0x1p-600, 0x1p600, 0, false},                  // (A.31) with phi = 0: s = -u, u not left out
       {0x1p700, 0x1p300, 0x1p300, true},              // (A.31), phi beyond the window: to 2^220, u with it
       {0x1p-300, 0x1p300, 0x1p-600, true},            // (A.31), phi below it: to 2^-220, dy the other way
-      {0x1p700, -0x1p300, 0x1p300, false},            // (A.30), phi beyond the window
+      {0x1p700, -0x1p300, 0x1p300, true},             // (A.30), phi beyond the window: to 2^220, u with it
+      {0x1p301, -0x1p300, 0x1p300, false},            // (A.30), u too close to |dy| for that move
+      {0x1p700, -0x1p300, 0x1p-300, false},           // (A.30), a soft phi: beside -u, never moved
       {0x1p-1050, 0x1p-1049, 0.5, false},             // (A.31), its root subnormal
       {0x1p700, 0x1p1000, 0x1p100, true},             // (A.32), its root beyond the largest double: infinity
       {0x1p-600, 0x1p300, 0x1p100, true},             // (A.32), u far below 2^j dy: left out, the margin doubled

@@ -716,9 +716,15 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // window: phi moved to 2^j phi near 2^-220 with dy moved by 2^-j keeps N and gives
 // N / (1 + 2^j phi) = s (1 - e), 0 < e < 2^j phi < 2^-219; phi moved to 2^-j phi near
 // 2^220 with u moved by 2^-j gives 2^-j N / (1 + 2^-j phi) = s (1 - e'), 0 < e' <
-// 2^j / phi < 2^-219. Where these moves bring u, dy, phi and s0 into the fast
+// 2^j / phi < 2^-219. (A.30) with a stiff phi moves the same way, where u then
+// lies at least 3 binades above |dy|: the moved Q'' = 2^-j (Q + (2^j - 1) s^2),
+// so Q''(s*) < s*^2, and Q''(dy) < 0 puts s* below the moved root r'', where
+// the slope's magnitude is at least sqrt(disc''): r'' - s* < s*^2 / sqrt(disc''),
+// and |s*| <= u / (1 + phi) + 2 |dy| lies below 0.51 sqrt(disc''), so s* is within
+// 4.2 r''^2 / sqrt(disc'') of r'', far below the impact margin's K (1 + 2^-j phi)
+// r''^2 / sqrt(disc''). Where these moves bring u, dy, phi and s0 into the fast
 // window, the fixed-bound step rounds the moved root 2^k s (or its near value, the
-// margin doubled, far above 2^-219 |s0|) to r', and r = 2^-k r' is the root's
+// margin doubled) to r', and r = 2^-k r' is the root's
 // rounding wherever r is a finite normal T: the T values and midpoints around r'
 // move with it onto those around r (at the least normal value the moved frame's
 // lower midpoint lies above T's, so a root above it is above T's too). Otherwise
@@ -730,7 +736,7 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // when u does (|ds/du| < 1), so its step runs with u = 0; in (A.31), with phi
 // (moved) in [2^-240, 2^241], the smaller of u and 2 phi dy lies below 2^-235 of
 // the larger, so N and the root move by less than that when it is dropped. The
-// margin, doubled, covers either.
+// margin, doubled, covers either. `which` is the exact case, not free flight.
 inline std::optional<double> rounded_by_moves(double u, double dy, double phi, contact_case which) {
   using S = scaled<double>;
   constexpr int window = plain_window<double>;
@@ -740,7 +746,7 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
     dy_move = binade_of(phi) >> 1;  // phi into [1, 4) (a zero phi stays zero)
     phi_move = -2 * dy_move;
   } else if (!in_fast_window(phi, true)) {
-    if (which != contact_case::contact) return std::nullopt;
+    if (which == contact_case::impact && !(phi > 1)) return std::nullopt;  // (a soft one: beside -u)
     near_value = true;
     if (phi > 1) {
       u_move = phi_move = 220 - binade_of(phi);
@@ -755,6 +761,7 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
   const int u_binade = u == 0 ? binade_of(dy) + dy_move : binade_of(u) + u_move;
   const int dy_binade = dy == 0 ? u_binade : binade_of(dy) + dy_move;
   const int shift = window - 3 - std::max(u_binade, dy_binade);
+  if (near_value && which == contact_case::impact && !(u_binade >= dy_binade + 3)) return std::nullopt;
   const bool u_negligible = (which == contact_case::release || (which == contact_case::contact && phi != 0)) &&
                             u_binade + shift < -window;
   const bool dy_negligible = which == contact_case::contact && dy_binade + shift < -window;
