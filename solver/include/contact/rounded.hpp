@@ -741,7 +741,7 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
   using S = scaled<double>;
   constexpr int window = plain_window<double>;
   int u_move = 0, dy_move = 0, phi_move = 0;  // the moves above, before u and dy move by 2^shift
-  bool near_value = false;                    // (A.31)'s: the moved root is 2^shift s (1 - e)
+  bool near_value = false;                    // phi moved for (A.31) or (A.30): the moved root is near 2^shift s
   if (which == contact_case::release) {
     dy_move = binade_of(phi) >> 1;  // phi into [1, 4) (a zero phi stays zero)
     phi_move = -2 * dy_move;
@@ -757,7 +757,7 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
   }
   // the larger of |u|, |dy| moved to binade window - 3, so that s0, below
   // 3 max(|u|, |dy|) in every case, stays inside; the smaller must stay inside
-  // too (u and dy are not both zero outside free flight), but for the release's u
+  // too (u and dy are not both zero outside free flight), unless it may be dropped
   const int u_binade = u == 0 ? binade_of(dy) + dy_move : binade_of(u) + u_move;
   const int dy_binade = dy == 0 ? u_binade : binade_of(dy) + dy_move;
   const int shift = window - 3 - std::max(u_binade, dy_binade);
