@@ -547,7 +547,8 @@ TYPED_TEST(RoundedFixedStep, DecidesOrdinaryInputsWithoutTheExactDecision) {
 
 // float's fast path (the stable formulas in double, both ends of the bound rounded to
 // float) decides beyond float's range and among its subnormals too: where both ends
-// round to infinity, or to one subnormal, so does the root.
+// round to infinity, or to one subnormal, so does the root; where they straddle the
+// overflow threshold, the exact decision decides.
 TEST(RoundedFloat, FastPathDecidesOverflowAndSubnormals) {
   const float overflow[3] = {-3e38f, 1e38f, 100.0f};  // (A.32), s about 1.2e39
   const float subnormal[3] = {-1e-40f, 1e-30f, 1e-10f};  // (A.31), s about 1e-40
@@ -558,6 +559,14 @@ TEST(RoundedFloat, FastPathDecidesOverflowAndSubnormals) {
   }
   EXPECT_TRUE(std::isinf(solve_rounded(overflow[0], overflow[1], overflow[2]).s));
   EXPECT_EQ(std::fpclassify(solve_rounded(subnormal[0], subnormal[1], subnormal[2]).s), FP_SUBNORMAL);
+  // (A.32) with s = sqrt(phi) dy = 2^128 (1 - 2^-25 - 2^-51 ...), 2^-51 below the overflow
+  // threshold: one end rounds to infinity, the other to the largest float, so the exact
+  // decision decides, from no candidate, and gives the largest float
+  const float u = 0, dy = 0x1p126f, phi = 16 * (1 - 0x1p-24f);
+  const auto near_threshold = detail::solve_rounded_traced(u, dy, phi);
+  EXPECT_TRUE(near_threshold.exact_decision);
+  EXPECT_EQ(near_threshold.result.s, std::numeric_limits<float>::max());
+  EXPECT_TRUE(correctly_rounded(near_threshold.result.s, reference::solve(u, dy, phi), u, dy, phi));
 }
 
 
@@ -775,8 +784,9 @@ decided_tally moves_on(std::uint64_t seed, int count, std::array<int, 2> u_binad
 }
 
 // (A.32) with phi far above the window: dy moves by 2^j and phi by 2^-2j, which
-// keeps its polynomial, into [1, 4); (A.30) and (A.31) have no such move. (Up to
-// phi = 2^900: beyond, dy 2^j lies too far above these u for one window.)
+// keeps its polynomial, into [1, 4). (Up to phi = 2^900: beyond, dy 2^j lies too
+// far above these u for one window.) (A.30)'s own move of phi (below) needs u
+// far above |dy|, which these impacts never have.
 TEST(RoundedByMoves, StiffReleasesMovePhiIntoTheWindow) {
   const auto t = moves_on(94, 20000, {-23, -10}, {-23, -10}, {241, 900});
   EXPECT_EQ(t.wrong, 0);
@@ -801,25 +811,28 @@ TEST(RoundedByMoves, FarMagnitudesMoveIntoTheWindow) {
   }
 }
 
-// Zeros move too, a root beyond the largest double is infinite, and a release's u far
-// below 2^j dy is left out; what cannot move, or cannot move back, is left to the
-// wider step.
+// Draws uniform in [0, 1) and log-uniform in 2^[low, high].
+struct log2_draws {
+  std::mt19937_64 engine;
+  explicit log2_draws(std::uint64_t seed) : engine(seed) {}
+  double unit() { return std::uniform_real_distribution<double>(0, 1)(engine); }
+  double log2_uniform(double low, double high) { return std::exp2(low + (high - low) * unit()); }
+};
+
 // (A.31) with phi beyond the window either way and u near the scale of 2 phi dy
 // (so that the value beside an input does not decide): phi moves near 2^220 or
 // 2^-220, which changes the root by less than 2^-219 of it, and the margin,
 // doubled, covers that. Every contact is decided, and correctly rounded (a root
 // among the subnormals is left to the wider step: EachEdgeIsDecidedOrLeftAsDocumented).
 TEST(RoundedByMoves, ContactsMovePhiIntoTheWindow) {
-  std::mt19937_64 engine(20261128);
-  std::uniform_real_distribution<double> unit(0, 1);
-  auto log2_uniform = [&](double low, double high) { return std::exp2(low + (high - low) * unit(engine)); };
+  log2_draws draw(20261128);
   int k = 0;
   const auto t = decided_against_reference<double>(
       4000,
       [&] {
-        const double dy = log2_uniform(-30, 30);
-        const double phi = ++k % 2 ? log2_uniform(241, 900) : log2_uniform(-900, -241);  // normal roots
-        const double u = phi > 1 ? dy * phi * (1 + unit(engine)) : 2 * phi * dy * (4 * unit(engine) - 2);
+        const double dy = draw.log2_uniform(-30, 30);
+        const double phi = ++k % 2 ? draw.log2_uniform(241, 900) : draw.log2_uniform(-900, -241);  // normal roots
+        const double u = phi > 1 ? dy * phi * (1 + draw.unit()) : 2 * phi * dy * (4 * draw.unit() - 2);
         return std::tuple{u, dy, phi};
       },
       [](double u, double dy, double phi, contact_case which) { return detail::rounded_by_moves(u, dy, phi, which); });
@@ -833,14 +846,12 @@ TEST(RoundedByMoves, ContactsMovePhiIntoTheWindow) {
 // the value beside dy does not decide): phi moves near 2^220 with u, which moves the root by
 // far less than the impact margin. Every such impact is decided, correctly rounded.
 TEST(RoundedByMoves, StiffImpactsMovePhiIntoTheWindow) {
-  std::mt19937_64 engine(20261129);
-  std::uniform_real_distribution<double> unit(0, 1);
-  auto log2_uniform = [&](double low, double high) { return std::exp2(low + (high - low) * unit(engine)); };
+  log2_draws draw(20261129);
   const auto t = decided_against_reference<double>(
       4000,
       [&] {
-        const double dy = -log2_uniform(-30, 30), phi = log2_uniform(241, 700);
-        return std::tuple{-dy * phi * log2_uniform(4, 250), dy, phi};  // u / phi >= 2^4 |dy|: s near -u / phi
+        const double dy = -draw.log2_uniform(-30, 30), phi = draw.log2_uniform(241, 700);
+        return std::tuple{-dy * phi * draw.log2_uniform(4, 250), dy, phi};  // u / phi >= 2^4 |dy|: s near -u / phi
       },
       [](double u, double dy, double phi, contact_case which) { return detail::rounded_by_moves(u, dy, phi, which); });
   EXPECT_EQ(t.wrong, 0);
@@ -849,6 +860,9 @@ TEST(RoundedByMoves, StiffImpactsMovePhiIntoTheWindow) {
   EXPECT_GT(t.decided[impact], t.seen[impact] * 99 / 100);
 }
 
+// Zeros move too, a root beyond the largest double is infinite, and u or dy far
+// below the other is left out where the case allows; what cannot move, or cannot
+// move back, is left to the wider step.
 TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
   struct example {
     double u, dy, phi;

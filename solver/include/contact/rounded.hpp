@@ -288,7 +288,7 @@ inline constexpr bool fma_instruction = false;
 template <class T>
 [[gnu::always_inline]] inline detail::exact_pair<T> product(const T& a, const T& b) {
   if constexpr (detail::lane_vector<T> || (fma_instruction && detail::hardware_binary<T>) ||
-                (detail::emulated_format<T>::available && !detail::product_error_by_dekker<T>)) {
+                detail::binary128_class<T>) {
     return detail::two_prod(a, b);
   } else {
     const T high = a * b;
@@ -783,33 +783,25 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
   return S::shifted(*moved, -shift);
 }
 
-// Everything but double's common case, out of line so that its caller stays small.
+// Everything but double's and float's common cases, out of line so that its
+// caller stays small: outside the window where the Newton step is proven
+// (invalid input included), or for a type with no proven bound, the value
+// beside an input, double's moves into the window, else the wider type's step
+// or the exact decision.
 template <class T>
 [[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
-  using std::isfinite;
-  if constexpr (std::is_same_v<T, float>) {
-    if (auto invalid = reject_invalid(u, dy, phi)) return {*invalid, false};
-    solution<float> result;
-    if (rounded_form::round_through_double(u, dy, phi, result)) return {result, false};
-    return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
-  } else {
-    // Outside the window where the Newton step is proven (invalid input
-    // included), or for a type with no proven bound: the value beside an input,
-    // double's moves into the window, else the wider type's step or the exact
-    // decision.
-    if constexpr (rounded_form::has_fixed_bounds<T>) {
-      if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
-    }
-    if (!reject_invalid(u, dy, phi)) {
-      const contact_case which = exact_case(u, dy, phi);
-      if (which == contact_case::free) return {{T(-u), which}, false};  // (A.29) exact
-      if (auto beside = rounded_beside_an_input(u, dy, phi, which)) return {{*beside, which}, false};
-      if constexpr (std::is_same_v<T, double>) {
-        if (auto moved = rounded_by_moves(u, dy, phi, which)) return {{*moved, which}, false};
-      }
-    }
-    return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
+  if constexpr (rounded_form::has_fixed_bounds<T>) {
+    if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
   }
+  if (!reject_invalid(u, dy, phi)) {
+    const contact_case which = exact_case(u, dy, phi);
+    if (which == contact_case::free) return {{T(-u), which}, false};  // (A.29) exact
+    if (auto beside = rounded_beside_an_input(u, dy, phi, which)) return {{*beside, which}, false};
+    if constexpr (std::is_same_v<T, double>) {
+      if (auto moved = rounded_by_moves(u, dy, phi, which)) return {{*moved, which}, false};
+    }
+  }
+  return rounded_beyond_the_step<T>(u, dy, phi, nullptr);
 }
 
 // solve_rounded, and whether it needed the exact decision (for the tests and
@@ -820,14 +812,18 @@ template <class T>
 [[gnu::always_inline]] inline traced_solution<T> solve_rounded_traced(const T& u, const T& dy, const T& phi) {
   static_assert(rounded_available<T>, "solve_rounded: correct rounding is implemented for float, double, "
                                       "long double and float128 only");
-  if constexpr (std::is_same_v<T, double>) {
-    if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound(u, dy, phi);
-  } else if constexpr (std::is_same_v<T, float>) {
-    solution<float> result;
+  if constexpr (std::is_same_v<T, float>) {
+    using std::isfinite;
+    solution<float> result{};  // (the exact decision answers invalid input before reading it)
     if (!reject_invalid(u, dy, phi) && rounded_form::round_through_double(u, dy, phi, result)) [[likely]]
       return {result, false};
+    return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
+  } else {
+    if constexpr (std::is_same_v<T, double>) {
+      if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound(u, dy, phi);
+    }
+    return solve_rounded_general(u, dy, phi);
   }
-  return solve_rounded_general(u, dy, phi);
 }
 
 }  // namespace detail
