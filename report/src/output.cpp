@@ -523,9 +523,9 @@ void write_method(std::ostream& md, const run_info& info) {
         "NAME alone (`contact::batch_targets()`), timed for every target this CPU supports, in float and double. "
         "Every target gives batch's results bit for bit (tested), so the batch[NAME] rows have timings and no "
         "accuracy figures of their own. **rounded_batch** is `contact::solve_rounded_batch`, whose results equal "
-        "rounded's bit for bit (tested): in double the vectors take the inputs inside the common window and "
-        "solve_rounded the rest; in float it is solve_rounded lane by lane; **rounded_batch[NAME]** is its kernel "
-        "of target NAME alone, in double.\n"
+        "rounded's bit for bit (tested): the vectors take the inputs inside the common window (float's widened "
+        "to double, where they run float's own test) and solve_rounded the rest; **rounded_batch[NAME]** is its "
+        "kernel of target NAME alone, in float and double.\n"
         "- **Types.** The registered scalar types of `contact/types.hpp` ("
      << join(contact::type_names)
      << "); each scene says which algorithms run in which of them, "

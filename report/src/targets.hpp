@@ -2,7 +2,7 @@
 // this CPU runs is timed alone, as the row "batch[NAME]", wherever the report
 // times batch (the scenes' timings in float and double, the throughput and
 // batch across scenes); the row "batch" is solve_batch, the target dispatch
-// chose. Likewise "rounded_batch[NAME]" beside rounded_batch, in double.
+// chose. Likewise "rounded_batch[NAME]" beside rounded_batch.
 #pragma once
 
 #include <cstddef>

@@ -251,9 +251,8 @@ struct timed_row {
   const contact::batch_target* target = nullptr;
 };
 
-// The rows a run times in T: each method of the run and, after batch in float
-// and double and after rounded_batch in double (float's runs solve_rounded
-// lane by lane on every target), each target's kernel that this CPU runs
+// The rows a run times in T: each method of the run and, after batch and
+// rounded_batch in float and double, each target's kernel that this CPU runs
 // (targets.hpp).
 template <class T>
 std::vector<timed_row> timed_rows(const run& r) {
@@ -261,7 +260,7 @@ std::vector<timed_row> timed_rows(const run& r) {
   for (method m : r.methods) {
     rows.push_back({name_of(m), m});
     if constexpr (has_batch_kernels<T>)
-      if (m == method::batch || (m == method::rounded_batch && std::is_same_v<T, double>))
+      if (m == method::batch || m == method::rounded_batch)
         for (const contact::batch_target* t : supported_batch_targets())
           rows.push_back({target_row_name(name_of(m), *t), m, t});
   }

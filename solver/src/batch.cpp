@@ -48,7 +48,7 @@ const auto& all_targets() {
 #define CONTACT_BATCH_KERNEL(name)                                                                                 \
   batch_target{#name, cpu_runs(batch_kernels::name::highway_target()), &batch_kernels::name::solve_double, \
                &batch_kernels::name::solve_float, &batch_kernels::name::solve_rounded_double,             \
-               &batch_kernels::solve_rounded_lanes<float>},
+               &batch_kernels::name::solve_rounded_float},
 #include "batch_kernels.inc"
 #undef CONTACT_BATCH_KERNEL
       batch_target{"scalar", true, &batch_kernels::solve_stable_lanes<double>, &batch_kernels::solve_stable_lanes<float>,

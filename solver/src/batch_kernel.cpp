@@ -7,13 +7,14 @@
 // lane is solve_stable's answer bit for bit.
 //
 // Two passes over each block of lanes. The first decides each lane's case and
-// answers free flight (any valid input); it packs the other lanes by what
-// they cost, as they are inside the common window, or moved by a power of two
-// into phi's band box (the moved stage of solve_stable). The second solves
-// each pack in whole vectors and moves s back. The rest (phi in no band, a
+// answers free flight (any valid input); it packs the other lanes by case, as
+// they are inside the common window, or moved by a power of two into phi's
+// band box (the moved stage of solve_stable). The second solves each pack in
+// whole vectors by its case's formula alone and moves s back. The rest (phi in no band, a
 // subnormal phi in float, u and dy too far apart, zero or subnormal u or dy,
 // an s that underflows or overflows once moved back, invalid input) go to
 // solve_stable, one by one.
+#include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include "batch_kernels.hpp"
 #include "contact/rounded.hpp"
@@ -388,9 +390,9 @@ struct band_fields {
   static constexpr const auto& impact_lowest = column<&bands::band::impact_lowest, 0>;
 };
 
-// Lanes packed by what they cost: the impacts and releases (a square root
-// and a division each) and the contacts (a division), so that no lane waits
-// on another case's operations. Each holds the lane's operands as the stable
+// Lanes packed by case: the impacts, the releases and the contacts, so that
+// each vector runs one case's operations only (a square root and a division
+// for a root, a division for a contact). Each holds the lane's operands as the stable
 // path takes them (moved by phi's band where the lane is), the move in bits
 // (0: unmoved), and the lane's index in the arrays.
 constexpr std::ptrdiff_t block = 256;
@@ -402,8 +404,8 @@ struct packed_lanes {
   alignas(64) T u[capacity], dy[capacity], phi[capacity];
   alignas(64) bits offset[capacity];
   alignas(64) std::make_signed_t<bits> index[capacity];
-  std::ptrdiff_t count = 0;
-  bool moved = false;  // some lane has a non-zero offset
+  std::ptrdiff_t count = 0;  // (the packs of a case count in case_counts while the first pass fills them)
+  bool moved = false;        // offset is kept (some lane may have a non-zero one); else every offset is 0
 };
 
 // The lane orders that bring a mask's lanes first, by the mask's bits: the
@@ -423,48 +425,59 @@ inline constexpr auto compaction_orders = [] {
   return orders;
 }();
 
-// Appends the lanes of `lanes_of` to `into`, in order.
+// A row of those tables as the indices of a TableLookupLanes.
+template <class D, std::size_t lanes_per_vector>
+HWY_INLINE auto lane_order(D d, const std::array<std::uint8_t, lanes_per_vector>& row) {
+  const hn::RebindToSigned<D> di;
+  const hn::Rebind<std::uint8_t, decltype(di)> d8;
+  const hn::Rebind<std::int32_t, decltype(di)> d32;
+  const auto order32 = hn::PromoteTo(d32, hn::LoadU(d8, row.data()));
+  if constexpr (sizeof(hn::TFromD<D>) == 8) return hn::IndicesFromVec(d, hn::PromoteTo(di, order32));
+  else return hn::IndicesFromVec(d, order32);
+}
+
 // A block's lanes as the first pass sorts them: by case, and by whether phi
-// is subnormal (double: the first band), and those left to solve_stable. In
-// the rounded mode, whose steps share no square root, roots holds the impacts
-// and releases the releases.
+// is subnormal (double: the first band), and those left to the scalar path.
 template <class T>
 struct sorted_lanes {
-  packed_lanes<T> roots, releases, contacts, roots_of_subnormal_phi, contacts_of_subnormal_phi, scalar;
+  packed_lanes<T> impacts, releases, contacts, scalar;
+  packed_lanes<T> impacts_of_subnormal_phi, releases_of_subnormal_phi, contacts_of_subnormal_phi;
   packed_lanes<T> far_impacts, far_contacts, far_releases;  // u and dy too far apart for the band, unmoved
 };
 
+// The counts of the packs of a case while the first pass fills them: locals
+// of solve, kept in registers (a count in the pack's own object would be
+// stored and read again around every vector store into the pack).
+struct case_counts {
+  std::ptrdiff_t impacts = 0, releases = 0, contacts = 0;
+};
+
+// Appends the lanes of `lanes_of` to `into`, in order.
 template <class D>
-HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, hn::Mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
+HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, std::ptrdiff_t& count, hn::Mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
                      hn::Vec<D> phi, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Vec<hn::RebindToSigned<D>> index) {
   const hn::RebindToUnsigned<D> du;
   const hn::RebindToSigned<D> di;
-  const std::ptrdiff_t at = into.count;
+  const std::ptrdiff_t at = count;
   constexpr std::size_t lanes_per_vector = hn::MaxLanes(D());
   if constexpr (lanes_per_vector <= 8 && !HWY_HAVE_SCALABLE) {
     std::uint8_t bits[8] = {};
     hn::StoreMaskBits(d, lanes_of, bits);
-    const hn::Rebind<std::uint8_t, decltype(di)> d8;
-    const hn::Rebind<std::int32_t, decltype(di)> d32;
-    const auto order32 = hn::PromoteTo(d32, hn::LoadU(d8, compaction_orders<lanes_per_vector>[bits[0]].data()));
-    hn::Vec<decltype(di)> order_lanes;
-    if constexpr (sizeof(hn::TFromD<D>) == 8) order_lanes = hn::PromoteTo(di, order32);
-    else order_lanes = order32;
-    const auto order = hn::IndicesFromVec(d, order_lanes);
+    const auto order = lane_order(d, compaction_orders<lanes_per_vector>[bits[0]]);
     auto first = [&](auto v) { return hn::BitCast(hn::DFromV<decltype(v)>(), hn::TableLookupLanes(hn::BitCast(d, v), order)); };
     hn::StoreU(first(u), d, into.u + at);
     hn::StoreU(first(dy), d, into.dy + at);
     hn::StoreU(first(phi), d, into.phi + at);
-    hn::StoreU(first(offset), du, into.offset + at);
+    if (into.moved) hn::StoreU(first(offset), du, into.offset + at);
     hn::StoreU(first(index), di, into.index + at);
   } else {
     hn::StoreU(hn::Compress(u, lanes_of), d, into.u + at);
     hn::StoreU(hn::Compress(dy, lanes_of), d, into.dy + at);
     hn::StoreU(hn::Compress(phi, lanes_of), d, into.phi + at);
-    hn::StoreU(hn::Compress(offset, hn::RebindMask(du, lanes_of)), du, into.offset + at);
+    if (into.moved) hn::StoreU(hn::Compress(offset, hn::RebindMask(du, lanes_of)), du, into.offset + at);
     hn::StoreU(hn::Compress(index, hn::RebindMask(di, lanes_of)), di, into.index + at);
   }
-  into.count += static_cast<std::ptrdiff_t>(hn::CountTrue(d, lanes_of));
+  count += static_cast<std::ptrdiff_t>(hn::CountTrue(d, lanes_of));
 }
 
 // A lane's s, computed on its moved operands, moved back: exact where s is 0
@@ -503,36 +516,45 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
   return hn::IfThenElse(overflows, hn::CopySignToAbs(hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()), s.v), moved);
 }
 
-// (A.30) and (A.32): the impacts (dy <= 0) and the releases of `lanes`, each
-// with its square root and one division, the reciprocal of the impact's or of
-// the release's denominator. With `phi_is_subnormal` the products with phi are
-// formed from normal factors, as solve_stable forms them
-// (stable_form::impact_quotient).
-template <class D, bool phi_is_subnormal>
-HWY_INLINE lanes<D> answer_roots(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  using L = lanes<D>;
-  const auto impact_side = dy <= L(0);
-  const auto factors = detail::factors_of<phi_is_subnormal>(phi, fabs(dy));  // of phi |dy|
-  const L phi_dy = factors.phi * factors.x;                      // impact: push = phi gap; release: phi dy
-  const L phi_dy_error = detail::product_error(factors.phi, factors.x, phi_dy);
-  const auto stiffness = stable_form::stiffness_of(phi_dy, phi_dy_error, dy);  // release: phi dy^2
-  const L term = select(impact_side, L(phi_dy * (u + dy)), stable_form::release_term(u, stiffness));  // impact: push (u - gap)
-  const L root = square_root(stable_form::discriminant(u, term));
-  const auto one_plus_phi = detail::two_sum(L(1), phi);
-  const auto u_plus_root = detail::two_sum(u, root);
-  const L inverse = L(1) / select(impact_side, stable_form::impact_denominator(one_plus_phi),
-                                  stable_form::release_denominator(u, u_plus_root));
-  const L impact = stable_form::impact_quotient<phi_is_subnormal>(u, phi_dy, phi_dy_error, root, one_plus_phi, inverse, factors);
-  const L release = stable_form::release_quotient(u, stiffness, root, u_plus_root, inverse);
-  return select(impact_side, detail::impact_clamped(impact, u, dy), detail::clamped_above_positive(release, dy));
+// s computed on operands moved by `offset`, moved back (move_back). The
+// lanes it lands below the normal binades are rounded once there, as
+// solve_stable's move_back_below_normal rounds them (scaled<T>), then clamped
+// in the unmoved frame by clamp(rounded, u, dy), u and dy from unmoved() (read
+// only where such a lane exists). moved_back is false on the lanes left to
+// the scalar path.
+template <class D, class Clamp, class Unmoved>
+HWY_INLINE lanes<D> moved_back_or_rounded(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back,
+                                          Clamp clamp, Unmoved unmoved) {
+  using T = hn::TFromD<D>;
+  auto below_normal = hn::FirstN(d, 0);
+  const lanes<D> moved = move_back(d, s, offset, moved_back, below_normal);
+  if (hn::AllFalse(d, below_normal)) [[likely]] return moved;
+  const hn::RebindToSigned<D> di;
+  const scaled_lanes<D> x(s);
+  const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
+  const lanes<D> rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
+  const auto [u, dy] = unmoved();
+  moved_back = hn::Or(moved_back, below_normal);
+  return hn::IfThenElse(below_normal, clamp(rounded, u, dy).v, moved.v);
 }
 
-// (A.31): the contacts, one division each.
+// (A.30), (A.31) and (A.32), each on a pack of its own, as solve_stable
+// solves them (stable_form's formulas, then the clamp onto the case's side).
+// With `phi_is_subnormal` the products with phi are formed from normal
+// factors (detail::factors_of).
+template <class D, bool phi_is_subnormal>
+HWY_INLINE lanes<D> answer_impacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  return detail::impact_clamped(stable_form::impact<phi_is_subnormal>(u, -dy, phi), u, dy);
+}
+
+template <class D, bool phi_is_subnormal>
+HWY_INLINE lanes<D> answer_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
+  return detail::clamped_above_positive(stable_form::release<phi_is_subnormal>(u, dy, phi), dy);
+}
+
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);
-  const auto contact = stable_form::contact_fraction(u, phi, factors.phi, factors.x);
-  return detail::contact_clamped(lanes<D>(contact.numerator / contact.denominator), dy);
+  return detail::contact_clamped(stable_form::contact<phi_is_subnormal>(u, dy, phi), dy);
 }
 
 // ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
@@ -576,6 +598,19 @@ HWY_INLINE lanes<D> rounded_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return rounded_or_undecided(D(), rounded_form::release_step(u, dy, phi));
 }
 
+// float's rounding test on double lanes (rounded_form::round_through_double):
+// s, float's stable root computed in double, where both ends of its bound
+// round to one float; NaN (solve_rounded in float) where they do not.
+template <class D>
+HWY_INLINE lanes<D> through_double(lanes<D> s) {
+  static_assert(std::is_same_v<hn::TFromD<D>, double>);
+  const hn::Rebind<float, D> df;
+  const lanes<D> bound = rounded_form::through_double_bound(s);
+  const auto below = hn::PromoteTo(D(), hn::DemoteTo(df, (s - bound).v));
+  const auto above = hn::PromoteTo(D(), hn::DemoteTo(df, (s + bound).v));
+  return hn::IfThenElse(hn::Eq(below, above), above, hn::Set(D(), std::numeric_limits<double>::quiet_NaN()));
+}
+
 // The exact stage (detail::stage::exact) of the lanes too far apart for the
 // band, each case on scaled_lanes; a lane scaled_lanes did not carry, or a
 // release root that rounds to infinity below 2^(max_exponent + 2) (only the
@@ -616,11 +651,22 @@ HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
 }
 
+// What a kernel computes: solve_stable's results, solve_rounded's, or
+// solve_rounded's in float on lanes widened to double (rounded_float).
+enum class kernel_mode { stable, rounded, rounded_float };
+
 // The scalar path of each mode, for the lanes the vectors leave.
-template <bool rounded_mode, class T>
+template <kernel_mode mode, class T>
 void solve_lane(T u, T dy, T phi, T& s, int& which) {
-  if constexpr (rounded_mode) solve_rounded_lane(u, dy, phi, s, which);
-  else solve_stable_lane(u, dy, phi, s, which);
+  if constexpr (mode == kernel_mode::stable) {
+    solve_stable_lane(u, dy, phi, s, which);
+  } else if constexpr (mode == kernel_mode::rounded) {
+    solve_rounded_lane(u, dy, phi, s, which);
+  } else {  // (the lanes are floats, exact in double)
+    float rounded;
+    solve_rounded_lane(float(u), float(dy), float(phi), rounded, which);
+    s = rounded;
+  }
 }
 
 // The packed lanes' s by `answer`, written to their places (their cases are
@@ -628,7 +674,7 @@ void solve_lane(T u, T dy, T phi, T& s, int& which) {
 // the scalar path. Returns how many those were. `clamp` (s, u, dy) is the
 // lanes' clamp onto the side of dy of their case. (The rounded mode's packs
 // hold no moved lane.)
-template <bool rounded_mode, class D, class Answer, class Clamp>
+template <kernel_mode mode, class D, class Answer, class Clamp>
 HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
                                        const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
                                        int* which_out, Answer answer, Clamp clamp) {
@@ -646,23 +692,9 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
     L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
     auto moved_back = hn::FirstN(d, width);
     if (lanes_in.moved) {
-      const L moved_s = s;
-      const auto offset = hn::Load(du, lanes_in.offset + k);
-      auto below_normal = hn::FirstN(d, 0);
-      s = move_back(d, s, offset, moved_back, below_normal);
-      if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
-        // an s that lands below the normal binades once moved back: rounded
-        // once there, as solve_stable's move_back_below_normal rounds it
-        // (scaled<T>), then clamped in the unmoved frame
-        const hn::RebindToSigned<D> di;
-        const scaled_lanes<D> x(moved_s);
-        const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
-        const L rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
-        const auto index = hn::Load(di, lanes_in.index + k);
-        const L clamped = clamp(rounded, L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index)));
-        s = hn::IfThenElse(below_normal, clamped.v, s.v);
-        moved_back = hn::Or(moved_back, below_normal);
-      }
+      const auto index = hn::Load(hn::RebindToSigned<D>(), lanes_in.index + k);
+      s = moved_back_or_rounded(d, s, hn::Load(du, lanes_in.offset + k), moved_back, clamp,
+                                [&] { return std::pair{L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index))}; });
     }
     moved_back = hn::AndNot(hn::IsNaN(s.v), moved_back);  // (far lanes: a NaN s is one scaled_lanes did not carry)
     const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
@@ -679,7 +711,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
       for (std::ptrdiff_t j = 0; j < lanes_here; ++j)
         if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) {
           const auto i = static_cast<std::ptrdiff_t>(lanes_in.index[k + j]);
-          solve_lane<rounded_mode>(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
+          solve_lane<mode>(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
           ++left;
         }
     }
@@ -696,7 +728,8 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
 // the rest are noted for solve_stable.
 template <bool rounded_mode, class D>
 HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
-                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted) {
+                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted,
+                            case_counts& counts) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -836,10 +869,10 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(moved_u, moved_dy, moved_phi));
 
   // (A.29): s = -u, written now, and every lane's case; the second pass
-  // writes the other lanes' s, solve_stable the lanes it solves
+  // writes the other lanes' s, the scalar path the lanes it solves
   free_flight = free_flight | (answerable & !contact_before & (sum <= L(0)));
   const auto is_contact = answerable & contact_before & stays;
-  hn::StoreU(hn::Neg(u), d, s_out + i);
+  const auto is_root = answerable & !free_flight & !is_contact;
   const auto which = hn::IfThenElse(free_flight.m, hn::Set(d, T(contact_case::free)),
                                     hn::IfThenElse(contact_before.m,
                                                    hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
@@ -851,15 +884,13 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     else return hn::ConvertTo(di32, cases);
   };
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
-  const auto is_root = answerable & !free_flight & !is_contact;
-  // (the rounded mode packs the releases apart: its steps share no square root)
-  const auto is_release = rounded_mode ? is_root & contact_before : lane_mask<D>{hn::FirstN(d, 0)};
-  const auto is_root_packed = rounded_mode ? is_root & !contact_before : is_root;
+  const auto is_impact = is_root & !contact_before, is_release = is_root & contact_before;
+  hn::StoreU(hn::Neg(u), d, s_out + i);
   if (hn::AllTrue(d, inside)) [[likely]] {
     hn::StoreU(which_lanes(which), di32, which_out + i);
-    pack(d, sorted.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    pack(d, sorted.roots, is_root_packed.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    if constexpr (rounded_mode) pack(d, sorted.releases, is_release.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    pack(d, sorted.impacts, counts.impacts, is_impact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    pack(d, sorted.releases, counts.releases, is_release.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
+    pack(d, sorted.contacts, counts.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
     return;
   }
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
@@ -869,30 +900,40 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   hn::StoreU(which_lanes(hn::IfThenElse(far.m, far_which, which)), di32, which_out + i);
   if (!hn::AllFalse(d, far.m)) [[unlikely]] {
     const auto none = hn::Zero(du);
-    if (!hn::AllFalse(d, far_impact.m)) pack(d, sorted.far_impacts, far_impact.m, u, dy, phi, none, index);
-    if (!hn::AllFalse(d, far_contact.m)) pack(d, sorted.far_contacts, far_contact.m, u, dy, phi, none, index);
-    if (!hn::AllFalse(d, far_release.m)) pack(d, sorted.far_releases, far_release.m, u, dy, phi, none, index);
+    if (!hn::AllFalse(d, far_impact.m)) pack(d, sorted.far_impacts, sorted.far_impacts.count, far_impact.m, u, dy, phi, none, index);
+    if (!hn::AllFalse(d, far_contact.m)) pack(d, sorted.far_contacts, sorted.far_contacts.count, far_contact.m, u, dy, phi, none, index);
+    if (!hn::AllFalse(d, far_release.m)) pack(d, sorted.far_releases, sorted.far_releases.count, far_release.m, u, dy, phi, none, index);
   }
   // (outside the window most packs take no lane of a vector: a test costs less than a pack)
-  auto pack_some = [&](packed_lanes<T>& into, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi) {
-    if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, lanes_of.m, u, dy, phi, offset, index);
+  auto pack_some = [&](packed_lanes<T>& into, std::ptrdiff_t& count, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
+                       hn::Vec<D> phi) {
+    if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, count, lanes_of.m, u, dy, phi, offset, index);
   };
-  pack_some(sorted.contacts, is_contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.roots, is_root_packed & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.releases, is_release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.contacts_of_subnormal_phi, is_contact & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.roots_of_subnormal_phi, is_root & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.scalar, !(answerable | free_flight | far), u, dy, phi);
-  sorted.roots.moved = sorted.releases.moved = sorted.contacts.moved = sorted.roots_of_subnormal_phi.moved =
-      sorted.contacts_of_subnormal_phi.moved = true;
+  // the packs that may now take a moved lane keep offsets from here on (0 for the lanes they hold)
+  auto keep_offsets = [](packed_lanes<T>& pack, std::ptrdiff_t count) {
+    if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
+    pack.moved = true;
+  };
+  keep_offsets(sorted.impacts, counts.impacts);
+  keep_offsets(sorted.releases, counts.releases);
+  keep_offsets(sorted.contacts, counts.contacts);
+  pack_some(sorted.impacts, counts.impacts, is_impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.releases, counts.releases, is_release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.contacts, counts.contacts, is_contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, is_impact}, std::pair{&sorted.releases_of_subnormal_phi, is_release},
+                                std::pair{&sorted.contacts_of_subnormal_phi, is_contact}}) {
+    keep_offsets(*pack, pack->count);
+    pack_some(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  }
+  pack_some(sorted.scalar, sorted.scalar.count, !(answerable | free_flight | far), u, dy, phi);
 }
 
 // Every lane of a pack by the scalar path; returns how many.
-template <bool rounded_mode, class T>
+template <kernel_mode mode, class T>
 std::ptrdiff_t solve_each_lane(packed_lanes<T>& pack, const T* u, const T* dy, const T* phi, T* s, int* which) {
   for (std::ptrdiff_t k = 0; k < pack.count; ++k) {
     const auto lane = static_cast<std::ptrdiff_t>(pack.index[k]);
-    solve_lane<rounded_mode>(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
+    solve_lane<mode>(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
   }
   const std::ptrdiff_t count = pack.count;
   pack.count = 0;
@@ -900,11 +941,17 @@ std::ptrdiff_t solve_each_lane(packed_lanes<T>& pack, const T* u, const T* dy, c
   return count;
 }
 
-// solve_batch, or with `rounded_mode` solve_rounded_batch: the first pass is the
-// same (the exact case of every lane, free flight answered); the rounded mode
-// answers the lanes of the plain packs by the fixed-bound step and leaves
-// the rest to solve_rounded.
-template <bool rounded_mode, class T>
+// Arrays too long for the cache stream from memory: the first pass asks for
+// the lanes two blocks ahead, as the hardware's prefetcher alone leaves it
+// waiting on memory.
+constexpr std::ptrdiff_t prefetch_distance = 2 * block;
+constexpr std::ptrdiff_t streamed_lanes = std::ptrdiff_t(1) << 15;
+
+// solve_batch, or solve_rounded_batch in the rounded modes: the first pass is
+// the same (the exact case of every lane, free flight answered); the rounded
+// modes answer the lanes of the plain packs by their fixed-bound step and
+// rounding test and leave the rest to solve_rounded.
+template <kernel_mode mode, class T>
 std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
   std::ptrdiff_t i = 0, left = 0;
 #if HWY_NATIVE_FMA
@@ -912,63 +959,128 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   const D d;
   const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
   sorted_lanes<T> sorted;
+  case_counts counts;
+  const bool streamed = n >= streamed_lanes;
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
-    for (; i < end; i += width) sort_vector<rounded_mode>(d, u, dy, phi, s, which, i, sorted);
+    for (; i < end; i += width) {
+      if (streamed && i + prefetch_distance < n) [[likely]] {
+        hwy::Prefetch(u + i + prefetch_distance);
+        hwy::Prefetch(dy + i + prefetch_distance);
+        hwy::Prefetch(phi + i + prefetch_distance);
+        __builtin_prefetch(s + i + prefetch_distance, 1);
+        __builtin_prefetch(which + i + prefetch_distance, 1);
+      }
+      sort_vector<mode != kernel_mode::stable>(d, u, dy, phi, s, which, i, sorted, counts);
+    }
+    sorted.impacts.count = std::exchange(counts.impacts, 0);
+    sorted.releases.count = std::exchange(counts.releases, 0);
+    sorted.contacts.count = std::exchange(counts.contacts, 0);
     using L = lanes<D>;
-    auto root_clamp = [](L s, L u, L dy) { return select(dy <= L(0), detail::impact_clamped(s, u, dy), detail::clamped_above_positive(s, dy)); };
+    auto impact_clamp = [](L s, L u, L dy) { return detail::impact_clamped(s, u, dy); };
+    auto release_clamp = [](L s, L, L dy) { return detail::clamped_above_positive(s, dy); };
     auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
-    if constexpr (rounded_mode) {
-      left += solve_packed<true>(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return rounded_impacts<D>(x...); },
-                                 root_clamp);
-      left += solve_packed<true>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return rounded_releases<D>(x...); },
-                                 root_clamp);
-      left += solve_packed<true>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return rounded_contacts<D>(x...); },
+    if constexpr (mode == kernel_mode::rounded) {
+      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which, [](auto... x) { return rounded_impacts<D>(x...); },
+                                 impact_clamp);
+      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return rounded_releases<D>(x...); },
+                                 release_clamp);
+      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return rounded_contacts<D>(x...); },
                                  contact_clamp);
-      for (auto* pack : {&sorted.roots_of_subnormal_phi, &sorted.contacts_of_subnormal_phi, &sorted.far_impacts,
-                         &sorted.far_contacts, &sorted.far_releases})
-        left += solve_each_lane<true>(*pack, u, dy, phi, s, which);
+    } else if constexpr (mode == kernel_mode::rounded_float) {
+      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which,
+                                 [](L u, L dy, L phi) { return through_double(stable_form::impact(u, -dy, phi)); }, impact_clamp);
+      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which,
+                                 [](L u, L dy, L phi) { return through_double(stable_form::release(u, dy, phi)); }, release_clamp);
+      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which,
+                                 [](L u, L dy, L phi) { return through_double(stable_form::contact(u, dy, phi)); }, contact_clamp);
+    }
+    if constexpr (mode != kernel_mode::stable) {
+      for (auto* pack : {&sorted.impacts_of_subnormal_phi, &sorted.releases_of_subnormal_phi, &sorted.contacts_of_subnormal_phi,
+                         &sorted.far_impacts, &sorted.far_contacts, &sorted.far_releases})
+        left += solve_each_lane<mode>(*pack, u, dy, phi, s, which);
     } else {
-      left += solve_packed<false>(d, sorted.roots, u, dy, phi, s, which, [](auto... x) { return answer_roots<D, false>(x...); }, root_clamp);
-      left += solve_packed<false>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
+      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which, [](auto... x) { return answer_impacts<D, false>(x...); },
+                                  impact_clamp);
+      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return answer_releases<D, false>(x...); },
+                                  release_clamp);
+      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
                                   contact_clamp);
-      if (sorted.roots_of_subnormal_phi.count != 0)
-        left += solve_packed<false>(d, sorted.roots_of_subnormal_phi, u, dy, phi, s, which,
-                                    [](auto... x) { return answer_roots<D, true>(x...); }, root_clamp);
+      if (sorted.impacts_of_subnormal_phi.count != 0)
+        left += solve_packed<mode>(d, sorted.impacts_of_subnormal_phi, u, dy, phi, s, which,
+                                    [](auto... x) { return answer_impacts<D, true>(x...); }, impact_clamp);
+      if (sorted.releases_of_subnormal_phi.count != 0)
+        left += solve_packed<mode>(d, sorted.releases_of_subnormal_phi, u, dy, phi, s, which,
+                                    [](auto... x) { return answer_releases<D, true>(x...); }, release_clamp);
       if (sorted.contacts_of_subnormal_phi.count != 0)
-        left += solve_packed<false>(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
+        left += solve_packed<mode>(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
                                     [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
       if (sorted.far_impacts.count != 0)
-        left += solve_packed<false>(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
-                                    root_clamp);
+        left += solve_packed<mode>(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
+                                    impact_clamp);
       if (sorted.far_contacts.count != 0)
-        left += solve_packed<false>(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
+        left += solve_packed<mode>(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
                                     contact_clamp);
       if (sorted.far_releases.count != 0)
-        left += solve_packed<false>(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
-                                    root_clamp);
+        left += solve_packed<mode>(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
+                                    release_clamp);
     }
-    left += solve_each_lane<rounded_mode>(sorted.scalar, u, dy, phi, s, which);
+    left += solve_each_lane<mode>(sorted.scalar, u, dy, phi, s, which);
   }
 #endif
   // the last lanes (and every lane where the vectors' multiply-add would round twice)
-  for (; i < n; ++i, ++left) solve_lane<rounded_mode>(u[i], dy[i], phi[i], s[i], which[i]);
+  for (; i < n; ++i, ++left) solve_lane<mode>(u[i], dy[i], phi[i], s[i], which[i]);
   return left;
 }
 
 }  // namespace
 
 std::ptrdiff_t solve_double(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n) {
-  return solve<false>(u, dy, phi, s, which, n);
+  return solve<kernel_mode::stable>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_float(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
-  return solve<false>(u, dy, phi, s, which, n);
+  return solve<kernel_mode::stable>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_rounded_double(const double* u, const double* dy, const double* phi, double* s, int* which,
                                     std::ptrdiff_t n) {
-  return solve<true>(u, dy, phi, s, which, n);
+  return solve<kernel_mode::rounded>(u, dy, phi, s, which, n);
+}
+
+// float's rounded mode runs in double (rounded_form::round_through_double):
+// block by block, the lanes widened, solved on double vectors, narrowed back
+// (exactly: each s is a float).
+std::ptrdiff_t solve_rounded_float(const float* u, const float* dy, const float* phi, float* s, int* which,
+                                   std::ptrdiff_t n) {
+  alignas(64) double wide_u[block], wide_dy[block], wide_phi[block], wide_s[block];
+  std::ptrdiff_t left = 0;
+  for (std::ptrdiff_t first = 0; first < n; first += block) {
+    const std::ptrdiff_t count = std::min(block, n - first);
+    std::ptrdiff_t k = 0;
+#if HWY_NATIVE_FMA
+    const hn::ScalableTag<double> d;
+    const hn::Rebind<float, decltype(d)> df;
+    const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
+    for (; k + width <= count; k += width) {
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, u + first + k)), d, wide_u + k);
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, dy + first + k)), d, wide_dy + k);
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, phi + first + k)), d, wide_phi + k);
+    }
+#endif
+    for (; k < count; ++k) {
+      wide_u[k] = u[first + k];
+      wide_dy[k] = dy[first + k];
+      wide_phi[k] = phi[first + k];
+    }
+    left += solve<kernel_mode::rounded_float>(wide_u, wide_dy, wide_phi, wide_s, which + first, count);
+    k = 0;
+#if HWY_NATIVE_FMA
+    for (; k + width <= count; k += width) hn::StoreU(hn::DemoteTo(df, hn::Load(d, wide_s + k)), df, s + first + k);
+#endif
+    for (; k < count; ++k) s[first + k] = static_cast<float>(wide_s[k]);
+  }
+  return left;
 }
 
 }  // namespace contact::batch_kernels::CONTACT_BATCH_KERNEL_NAME

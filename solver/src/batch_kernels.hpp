@@ -38,6 +38,8 @@ std::ptrdiff_t solve_rounded_lanes(const T* u, const T* dy, const T* phi, T* s, 
   std::ptrdiff_t solve_float(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n);      \
   std::ptrdiff_t solve_rounded_double(const double* u, const double* dy, const double* phi, double* s, int* which,         \
                                       std::ptrdiff_t n);                                                                  \
+  std::ptrdiff_t solve_rounded_float(const float* u, const float* dy, const float* phi, float* s, int* which,              \
+                                     std::ptrdiff_t n);                                                                   \
   }
 #include "batch_kernels.inc"
 #undef CONTACT_BATCH_KERNEL

@@ -461,6 +461,14 @@ bool rounds_alike(const fixed_step<T>& step, T& rounded) {
 // (overflow and the subnormals included): where both ends round to one float,
 // so does the root. Both ends have the sign of s, which is the root's (the bound
 // is relative), so a zero has the right sign; a zero s is an exact (A.31) root, +0.
+// (The bound is also the float batch kernel's, on double lanes: Num is
+// double or a vector of doubles.)
+template <class Num>
+[[gnu::always_inline]] inline Num through_double_bound(const Num& s) {
+  using std::fabs;
+  return fabs(s) * Num(0x1p-49);
+}
+
 [[gnu::always_inline]] inline bool round_through_double(const float& u, const float& dy, const float& phi,
                                                         solution<float>& out) {
   const double wide_u = u, wide_dy = dy, wide_phi = phi;
@@ -479,7 +487,7 @@ bool rounds_alike(const fixed_step<T>& step, T& rounded) {
     out.which = contact_case::release;  // (A.32)
     s = stable_form::release(wide_u, wide_dy, wide_phi);
   }
-  const double bound = std::fabs(s) * 0x1p-49;
+  const double bound = through_double_bound(s);
   const float below = static_cast<float>(s - bound), above = static_cast<float>(s + bound);
   out.s = above;  // the exact decision's candidate if the test below fails
   return below == above;

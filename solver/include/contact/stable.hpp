@@ -146,8 +146,7 @@ Num contact(const Num& u, const Num& dy, const Num& phi) {
 // its high part is corrected by the residual; what is left is the root's
 // error (the discriminant rounded twice) and the last rounding: 3.0 ulps
 // proven (proofs/gappa/stable_release_u_positive.g). Both divide once, by
-// release_denominator, so that the batch kernel shares the division with the
-// impact's.
+// release_denominator.
 
 // phi dy^2 = high + low to about 2^-104 of it: high = (phi dy) dy as rounded
 // twice, low from phi dy's rounding error (phi_dy_error, two_prod's low part)
