@@ -516,28 +516,6 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
   return hn::IfThenElse(overflows, hn::CopySignToAbs(hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()), s.v), moved);
 }
 
-// s computed on operands moved by `offset`, moved back (move_back). The
-// lanes it lands below the normal binades are rounded once there, as
-// solve_stable's move_back_below_normal rounds them (scaled<T>), then clamped
-// in the unmoved frame by clamp(rounded, u, dy), u and dy from unmoved() (read
-// only where such a lane exists). moved_back is false on the lanes left to
-// the scalar path.
-template <class D, class Clamp, class Unmoved>
-HWY_INLINE lanes<D> moved_back_or_rounded(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back,
-                                          Clamp clamp, Unmoved unmoved) {
-  using T = hn::TFromD<D>;
-  auto below_normal = hn::FirstN(d, 0);
-  const lanes<D> moved = move_back(d, s, offset, moved_back, below_normal);
-  if (hn::AllFalse(d, below_normal)) [[likely]] return moved;
-  const hn::RebindToSigned<D> di;
-  const scaled_lanes<D> x(s);
-  const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
-  const lanes<D> rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
-  const auto [u, dy] = unmoved();
-  moved_back = hn::Or(moved_back, below_normal);
-  return hn::IfThenElse(below_normal, clamp(rounded, u, dy).v, moved.v);
-}
-
 // (A.30), (A.31) and (A.32), each on a pack of its own, as solve_stable
 // solves them (stable_form's formulas, then the clamp onto the case's side).
 // With `phi_is_subnormal` the products with phi are formed from normal
@@ -692,9 +670,23 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
     L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
     auto moved_back = hn::FirstN(d, width);
     if (lanes_in.moved) {
-      const auto index = hn::Load(hn::RebindToSigned<D>(), lanes_in.index + k);
-      s = moved_back_or_rounded(d, s, hn::Load(du, lanes_in.offset + k), moved_back, clamp,
-                                [&] { return std::pair{L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index))}; });
+      const L moved_s = s;
+      const auto offset = hn::Load(du, lanes_in.offset + k);
+      auto below_normal = hn::FirstN(d, 0);
+      s = move_back(d, s, offset, moved_back, below_normal);
+      if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
+        // an s that lands below the normal binades once moved back: rounded
+        // once there, as solve_stable's move_back_below_normal rounds it
+        // (scaled<T>), then clamped in the unmoved frame
+        const hn::RebindToSigned<D> di;
+        const scaled_lanes<D> x(moved_s);
+        const auto shift = hn::ConvertTo(d, hn::ShiftRight<detail::binary_layout<T>::significand_bits>(hn::BitCast(di, offset)));
+        const L rounded = scaled_lanes<D>::shifted_down(x.significand, hn::Sub(x.exponent, shift));
+        const auto index = hn::Load(di, lanes_in.index + k);
+        const L clamped = clamp(rounded, L(hn::GatherIndex(d, u_in, index)), L(hn::GatherIndex(d, dy_in, index)));
+        s = hn::IfThenElse(below_normal, clamped.v, s.v);
+        moved_back = hn::Or(moved_back, below_normal);
+      }
     }
     moved_back = hn::AndNot(hn::IsNaN(s.v), moved_back);  // (far lanes: a NaN s is one scaled_lanes did not carry)
     const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
@@ -980,50 +972,36 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
     auto impact_clamp = [](L s, L u, L dy) { return detail::impact_clamped(s, u, dy); };
     auto release_clamp = [](L s, L, L dy) { return detail::clamped_above_positive(s, dy); };
     auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
+    // the packs of the three cases, each by its case's answer in this mode
+    auto solve_cases = [&](packed_lanes<T>& impacts, packed_lanes<T>& releases, packed_lanes<T>& contacts, auto impact,
+                           auto release, auto contact) {
+      left += solve_packed<mode>(d, impacts, u, dy, phi, s, which, impact, impact_clamp);
+      left += solve_packed<mode>(d, releases, u, dy, phi, s, which, release, release_clamp);
+      left += solve_packed<mode>(d, contacts, u, dy, phi, s, which, contact, contact_clamp);
+    };
     if constexpr (mode == kernel_mode::rounded) {
-      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which, [](auto... x) { return rounded_impacts<D>(x...); },
-                                 impact_clamp);
-      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return rounded_releases<D>(x...); },
-                                 release_clamp);
-      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return rounded_contacts<D>(x...); },
-                                 contact_clamp);
+      solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return rounded_impacts<D>(x...); },
+                  [](auto... x) { return rounded_releases<D>(x...); }, [](auto... x) { return rounded_contacts<D>(x...); });
     } else if constexpr (mode == kernel_mode::rounded_float) {
-      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which,
-                                 [](L u, L dy, L phi) { return through_double(stable_form::impact(u, -dy, phi)); }, impact_clamp);
-      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which,
-                                 [](L u, L dy, L phi) { return through_double(stable_form::release(u, dy, phi)); }, release_clamp);
-      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which,
-                                 [](L u, L dy, L phi) { return through_double(stable_form::contact(u, dy, phi)); }, contact_clamp);
+      solve_cases(sorted.impacts, sorted.releases, sorted.contacts,
+                  [](L u, L dy, L phi) { return through_double(stable_form::impact(u, -dy, phi)); },
+                  [](L u, L dy, L phi) { return through_double(stable_form::release(u, dy, phi)); },
+                  [](L u, L dy, L phi) { return through_double(stable_form::contact(u, dy, phi)); });
     }
     if constexpr (mode != kernel_mode::stable) {
       for (auto* pack : {&sorted.impacts_of_subnormal_phi, &sorted.releases_of_subnormal_phi, &sorted.contacts_of_subnormal_phi,
                          &sorted.far_impacts, &sorted.far_contacts, &sorted.far_releases})
         left += solve_each_lane<mode>(*pack, u, dy, phi, s, which);
     } else {
-      left += solve_packed<mode>(d, sorted.impacts, u, dy, phi, s, which, [](auto... x) { return answer_impacts<D, false>(x...); },
-                                  impact_clamp);
-      left += solve_packed<mode>(d, sorted.releases, u, dy, phi, s, which, [](auto... x) { return answer_releases<D, false>(x...); },
-                                  release_clamp);
-      left += solve_packed<mode>(d, sorted.contacts, u, dy, phi, s, which, [](auto... x) { return answer_contacts<D, false>(x...); },
-                                  contact_clamp);
-      if (sorted.impacts_of_subnormal_phi.count != 0)
-        left += solve_packed<mode>(d, sorted.impacts_of_subnormal_phi, u, dy, phi, s, which,
-                                    [](auto... x) { return answer_impacts<D, true>(x...); }, impact_clamp);
-      if (sorted.releases_of_subnormal_phi.count != 0)
-        left += solve_packed<mode>(d, sorted.releases_of_subnormal_phi, u, dy, phi, s, which,
-                                    [](auto... x) { return answer_releases<D, true>(x...); }, release_clamp);
-      if (sorted.contacts_of_subnormal_phi.count != 0)
-        left += solve_packed<mode>(d, sorted.contacts_of_subnormal_phi, u, dy, phi, s, which,
-                                    [](auto... x) { return answer_contacts<D, true>(x...); }, contact_clamp);
-      if (sorted.far_impacts.count != 0)
-        left += solve_packed<mode>(d, sorted.far_impacts, u, dy, phi, s, which, [](auto... x) { return far_impacts<D>(x...); },
-                                    impact_clamp);
-      if (sorted.far_contacts.count != 0)
-        left += solve_packed<mode>(d, sorted.far_contacts, u, dy, phi, s, which, [](auto... x) { return far_contacts<D>(x...); },
-                                    contact_clamp);
-      if (sorted.far_releases.count != 0)
-        left += solve_packed<mode>(d, sorted.far_releases, u, dy, phi, s, which, [](auto... x) { return far_releases<D>(x...); },
-                                    release_clamp);
+      solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return answer_impacts<D, false>(x...); },
+                  [](auto... x) { return answer_releases<D, false>(x...); }, [](auto... x) { return answer_contacts<D, false>(x...); });
+      if (sorted.impacts_of_subnormal_phi.count + sorted.releases_of_subnormal_phi.count + sorted.contacts_of_subnormal_phi.count != 0)
+        solve_cases(sorted.impacts_of_subnormal_phi, sorted.releases_of_subnormal_phi, sorted.contacts_of_subnormal_phi,
+                    [](auto... x) { return answer_impacts<D, true>(x...); }, [](auto... x) { return answer_releases<D, true>(x...); },
+                    [](auto... x) { return answer_contacts<D, true>(x...); });
+      if (sorted.far_impacts.count + sorted.far_releases.count + sorted.far_contacts.count != 0)
+        solve_cases(sorted.far_impacts, sorted.far_releases, sorted.far_contacts, [](auto... x) { return far_impacts<D>(x...); },
+                    [](auto... x) { return far_releases<D>(x...); }, [](auto... x) { return far_contacts<D>(x...); });
     }
     left += solve_each_lane<mode>(sorted.scalar, u, dy, phi, s, which);
   }
