@@ -648,6 +648,14 @@ TEST(RoundedWiderStep, DecidesDoubleBeyondItsWindow) {
 
 // ---- beside an input: stiff and soft phi far beyond the window --------------------
 
+// Draws uniform in [0, 1) and log-uniform in 2^[low, high].
+struct log2_draws {
+  std::mt19937_64 engine;
+  explicit log2_draws(std::uint64_t seed) : engine(seed) {}
+  double unit() { return std::uniform_real_distribution<double>(0, 1)(engine); }
+  double log2_uniform(double low, double high) { return std::exp2(low + (high - low) * unit()); }
+};
+
 // Per case, how many of `count` inputs (draw) a shortcut `decide` (given the exact
 // case: the value beside an input, or the moves below) rounds, each checked
 // against the reference.
@@ -715,6 +723,27 @@ TEST(RoundedBesideAnInput, SoftInputsRoundToMinusU) {
     EXPECT_GT(t.seen[c], 1000) << c;
     EXPECT_EQ(t.decided[c], t.seen[c]) << c;
   }
+}
+
+// Stiff phi with u far above |dy| and u / phi far below it: the root lies within
+// sqrt(|dy| u / phi) + 3 u / phi of dy, far under half its gap. Every such
+// (A.30) rounds to dy. (The looser bound 4 max(u, |dy|) / sqrt(phi) decides 285 of
+// these 4,000.)
+TEST(RoundedBesideAnInput, StiffImpactsWithUFarAboveDyRoundToDy) {
+  log2_draws draw(20261131);
+  const auto t = decided_against_reference<double>(
+      4000,
+      [&] {
+        const double gap = draw.log2_uniform(-300, 300), ratio = draw.log2_uniform(100, 400);
+        return std::tuple{gap * ratio, -gap, ratio * draw.log2_uniform(120, 300)};
+      },
+      [](double u, double dy, double phi, contact_case which) {
+        return detail::rounded_beside_an_input(u, dy, phi, which);
+      });
+  EXPECT_EQ(t.wrong, 0);
+  const int impact = static_cast<int>(contact_case::impact);
+  EXPECT_EQ(t.seen[impact], 4000);
+  EXPECT_EQ(t.decided[impact], t.seen[impact]);
 }
 
 // Near the window's edge the sliver is as wide as the gap: most inputs there are
@@ -811,14 +840,6 @@ TEST(RoundedByMoves, FarMagnitudesMoveIntoTheWindow) {
   }
 }
 
-// Draws uniform in [0, 1) and log-uniform in 2^[low, high].
-struct log2_draws {
-  std::mt19937_64 engine;
-  explicit log2_draws(std::uint64_t seed) : engine(seed) {}
-  double unit() { return std::uniform_real_distribution<double>(0, 1)(engine); }
-  double log2_uniform(double low, double high) { return std::exp2(low + (high - low) * unit()); }
-};
-
 // (A.31) with phi beyond the window either way and u near the scale of 2 phi dy
 // (so that the value beside an input does not decide): phi moves near 2^220 or
 // 2^-220, which changes the root by less than 2^-219 of it, and the margin,
@@ -860,6 +881,24 @@ TEST(RoundedByMoves, StiffImpactsMovePhiIntoTheWindow) {
   EXPECT_GT(t.decided[impact], t.seen[impact] * 99 / 100);
 }
 
+// (A.30) with phi |dy| far below u (at most 2^-480 of it), phi soft to stiff: dy
+// is left out, which moves the root by less than 2^-233 of it, and the margin,
+// doubled, covers that. Every such impact is decided, correctly rounded.
+TEST(RoundedByMoves, ImpactsLeaveOutADyFarBelowU) {
+  log2_draws draw(20261130);
+  const auto t = decided_against_reference<double>(
+      4000,
+      [&] {
+        const double u = draw.log2_uniform(300, 1000), phi = draw.log2_uniform(-200, 300);
+        return std::tuple{u, -u / std::max(phi, 1.0) * draw.log2_uniform(-700, -480), phi};
+      },
+      [](double u, double dy, double phi, contact_case which) { return detail::rounded_by_moves(u, dy, phi, which); });
+  EXPECT_EQ(t.wrong, 0);
+  const int impact = static_cast<int>(contact_case::impact);
+  EXPECT_EQ(t.seen[impact], 4000);
+  EXPECT_EQ(t.decided[impact], t.seen[impact]);
+}
+
 // Zeros move too, a root beyond the largest double is infinite, and u or dy far
 // below the other is left out where the case allows; what cannot move, or cannot
 // move back, is left to the wider step.
@@ -871,7 +910,8 @@ TEST(RoundedByMoves, EachEdgeIsDecidedOrLeftAsDocumented) {
   const example examples[] = {
       {0, 0x1p600, 0.5, true},                        // (A.31), u = 0
       {0x1p600, 0, 3, true},                          // (A.30), dy = 0: s = -u / (1 + phi)
-      {0x1p600, -0x1p-600, 0.5, false},               // (A.30), u and dy too far apart
+      {0x1p600, -0x1p-600, 0.5, true},                // (A.30), dy far below u: left out, the margin doubled
+      {0x1p600, -0x1p-600, 0x1p700, true},            // (A.30), likewise, with phi moved to 2^220 and u with it
       {0x1p-600, 0x1p600, 0.5, true},                 // (A.31), u far below dy: left out, the margin doubled
       {0x1p600, 0x1p-600, 0x1p-300, true},            // (A.31), dy far below u: left out likewise
       {0x1p-600, 0x1p600, 0, false},                  // (A.31) with phi = 0: s = -u, u not left out

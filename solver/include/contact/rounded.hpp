@@ -663,19 +663,20 @@ traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi
 //          and |s + u| = phi |u + 2 dy| / (1 + phi) <= 3 phi M; r = 2 dy for phi >= 1, else -u.
 //   (A.30), dy < 0 < dy + u, phi >= 1: s = dy - d, d the larger root of
 //          (1 + phi) d^2 - (2 dy + u) d + dy (dy + u) = 0 (dy (dy + u) < 0), so d <=
-//          |2 dy + u| / (1 + phi) + sqrt(|dy| (dy + u) / (1 + phi)) <= 3 M / phi + M / sqrt(phi)
-//          <= 4 M / sqrt(phi); r = dy.
+//          |2 dy + u| / (1 + phi) + sqrt(|dy| (dy + u) / (1 + phi)) <= 3 M / phi + sqrt(|dy| u / phi),
+//          under twice the larger term; r = dy.
 //   (A.30), phi <= 1/4: s = -u + e; with f(e) = e (u - e) - phi (dy + u - e)^2 = -Q(-u + e),
 //          f(0) < 0 and, at e1 = 2 phi (dy + u)^2 / u <= 2 phi u <= u / 2 (also <= 2 (dy + u)),
 //          f(e1) >= e1 u / 2 - phi (dy + u)^2 = 0: Q(-u) > 0 >= Q(-u + e1), so the smaller
 //          root lies in (-u, -u + e1], e <= 2 phi u; r = -u.
 //   (A.32), u < 0: s = (|u| + sqrt(u^2 + 4 phi dy^2)) / 2 <= |u| + phi dy^2 / |u|; r = -u.
 // Each bound is a power of two, from the binades b of the inputs (x in [2^b,
-// 2^(b+1)), binade_of; a zero phi below the least subnormal's; 3 < 2^2,
-// sqrt(phi) >= 2^floor(b/2)), so no arithmetic rounds. The gap below |r| is at
-// least 2^(b - p), b = binade_of(r): an ulp of r's binade, or of the one below
-// where |r| is a power of two; among the subnormals, more. So where b - p exceeds
-// the bound's exponent, the sliver is narrower than half of either gap.
+// 2^(b+1)), binade_of; a zero phi below the least subnormal's; 3 < 2^2; a
+// square root's exponent halved and rounded up), so no arithmetic rounds. The
+// gap below |r| is at least 2^(b - p), b = binade_of(r): an ulp of r's binade,
+// or of the one below where |r| is a power of two; among the subnormals, more.
+// So where b - p exceeds the bound's exponent, the sliver is narrower than half
+// of either gap.
 // `which` is the exact case of a valid input, not free flight.
 template <class T>
 std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, contact_case which) {
@@ -696,8 +697,11 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
     }
   } else if (which == contact_case::impact) {
     if (phi >= T(1)) {
+      if (dy == 0) return std::nullopt;  // (r = 0; and binade_of wants a non-zero x)
       r = dy;
-      sliver = largest + 3 - (phi_binade >> 1);
+      const int drift = largest + 3 - phi_binade;                          // 3 M / phi
+      const int spread = (binade_of(dy) + binade_of(u) + 3 - phi_binade) >> 1;  // sqrt(|dy| u / phi), rounded up
+      sliver = std::max(drift, spread) + 1;
     } else if (phi <= T(0.25)) {
       r = -u;
       sliver = phi_binade + binade_of(u) + 3;
@@ -743,8 +747,14 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // far below the other for the window. A release's root moves by at most |u|
 // when u does (|ds/du| < 1), so its step runs with u = 0; in (A.31), with phi
 // (moved) in [2^-240, 2^241], the smaller of u and 2 phi dy lies below 2^-235 of
-// the larger, so N and the root move by less than that when it is dropped. The
-// margin, doubled, covers either. `which` is the exact case, not free flight.
+// the larger, so N and the root move by less than that when it is dropped. In
+// (A.30), u > |dy| = g, and with g dropped the root is -u / (1 + phi): the root
+// lies between (u + 2 phi g) / (1 + phi) and u / (1 + phi) - 2 phi g^2 / u in
+// magnitude (sqrt(a^2 - b) >= a - b / a, a = u + 2 phi g, b = 4 (1 + phi) phi
+// g^2), within eps and eps (1 + phi) g / u of it, relatively, eps = 2 phi g / u:
+// both below 2^-234 once g (moved) lies below 2^-240 with phi below 2^241 and u
+// at binade 237. The margin, doubled, covers each. `which` is the exact case,
+// not free flight.
 inline std::optional<double> rounded_by_moves(double u, double dy, double phi, contact_case which) {
   using S = scaled<double>;
   constexpr int window = plain_window<double>;
@@ -772,7 +782,8 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
   if (near_value && which == contact_case::impact && !(u_binade >= dy_binade + 3)) return std::nullopt;
   const bool u_negligible = (which == contact_case::release || (which == contact_case::contact && phi != 0)) &&
                             u_binade + shift < -window;
-  const bool dy_negligible = which == contact_case::contact && dy_binade + shift < -window;
+  const bool dy_negligible =
+      (which == contact_case::contact || which == contact_case::impact) && dy_binade + shift < -window;
   if (std::min(u_binade, dy_binade) + shift < -window && !u_negligible && !dy_negligible) return std::nullopt;
   const double moved_u = u_negligible ? 0.0 : S::shifted(u, shift + u_move);
   const double moved_dy = dy_negligible ? 0.0 : S::shifted(dy, shift + dy_move);
