@@ -384,7 +384,7 @@ struct fixed_step {
 // cancellation. Like every step below, written once for T and for the batch
 // kernels' lanes.
 template <class T>
-fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   const T s0 = stable_form::contact(u, dy, phi);
   const T inverse = T(1) / T(T(1) + phi);
@@ -402,7 +402,7 @@ fixed_step<T> contact_step(const T& u, const T& dy, const T& phi) {
 // K |s0| over their relative distance (the discriminant is a sum of non-negative
 // terms, u^2 > 0 among them, so the root is not 0 in the window).
 template <class T>
-fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
   const auto [s0, root] = stable_form::impact_with_square_root(u, T(-dy), phi);
   const T denominator = T(1) + phi;
   const T inverse = T(1) / root;
@@ -418,7 +418,7 @@ fixed_step<T> impact_step(const T& u, const T& dy, const T& phi) {
 
 // (A.32): Q(s) = s (s + u) - phi dy^2, Q'(s*) = sqrt(disc) > s*.
 template <class T>
-fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline fixed_step<T> release_step(const T& u, const T& dy, const T& phi) {
   using std::fabs;
   const auto [s0, root] = stable_form::release_with_square_root(u, dy, phi);
   const T inverse = T(1) / root;
@@ -440,13 +440,13 @@ struct interval_ends {
 };
 
 template <class T>
-interval_ends<T> rounded_ends(const fixed_step<T>& step) {
+[[gnu::always_inline]] inline interval_ends<T> rounded_ends(const fixed_step<T>& step) {
   return {step.s0 + (step.delta - step.margin), step.s0 + (step.delta + step.margin)};
 }
 
 // When both ends round alike, the root rounds so.
 template <class T>
-bool rounds_alike(const fixed_step<T>& step, T& rounded) {
+[[gnu::always_inline]] inline bool rounds_alike(const fixed_step<T>& step, T& rounded) {
   const auto [below, above] = rounded_ends(step);
   rounded = above;
   return below == above;
@@ -535,13 +535,13 @@ rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T
 }
 
 template <class T>
-cased_step<T> fixed_bound_step(const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline cased_step<T> fixed_bound_step(const T& u, const T& dy, const T& phi) {
   if (dy <= 0) {
     if (u <= -dy) return {{T(-u), T(0), T(0)}, contact_case::free};  // (A.29) s = -u, exact
-    return {step_of_case(contact_case::impact, u, dy, phi), contact_case::impact};
+    return {rounded_form::impact_step(u, dy, phi), contact_case::impact};
   }
-  const contact_case which = stays_in_contact<true>(u, dy, phi) ? contact_case::contact : contact_case::release;
-  return {step_of_case(which, u, dy, phi), which};
+  if (stays_in_contact<true>(u, dy, phi)) return {rounded_form::contact_step(u, dy, phi), contact_case::contact};
+  return {rounded_form::release_step(u, dy, phi), contact_case::release};
 }
 
 // The wider type whose step stands in for T's where T's cannot decide: one with
