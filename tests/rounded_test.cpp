@@ -746,6 +746,33 @@ TEST(RoundedBesideAnInput, StiffImpactsWithUFarAboveDyRoundToDy) {
   EXPECT_EQ(t.decided[impact], t.seen[impact]);
 }
 
+// Physical u and dy under a stiff phi (2^300 to 2^1000), as the phi scene draws
+// them, solved whole: inside long double's and float128's windows the step's
+// (A.30) margin widens as the roots merge and its test fails, and the value
+// beside dy decides instead; double, outside its window, takes it first. All
+// correctly rounded, and fewer than 1 in 100 take the exact decision.
+TYPED_TEST(RoundedFixedStep, StiffImpactsTheStepCannotDecideRoundToDy) {
+  using T = TypeParam;
+  std::mt19937_64 random(97);
+  auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
+  int impacts = 0, exact_decisions = 0, wrong = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double a = std::pow(10.0, uniform(-7, -3)), b = std::pow(10.0, uniform(-7, -3));
+    const T u = T(std::max(a, b)), dy = T(-std::min(a, b));  // u > |dy|: (A.30) but for ties
+    const T phi = T(std::ldexp(uniform(1, 2), int(uniform(300, 1000))));
+    const auto exact = reference::solve(u, dy, phi);
+    if (exact.which != contact_case::impact) continue;
+    ++impacts;
+    const auto traced = detail::solve_rounded_traced(u, dy, phi);
+    exact_decisions += traced.exact_decision;
+    if (!correctly_rounded(traced.result.s, exact, u, dy, phi) && ++wrong <= 5)
+      ADD_FAILURE() << "u=" << u << " dy=" << dy << " phi=" << phi << ": " << traced.result.s;
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(impacts, 1990);
+  EXPECT_LE(exact_decisions, impacts / 100);
+}
+
 // Near the window's edge the sliver is as wide as the gap: most inputs there are
 // left to the step, and whatever is decided is right.
 TEST(RoundedBesideAnInput, DecidesOnlyWhereTheSliverIsNarrowerThanHalfTheGap) {

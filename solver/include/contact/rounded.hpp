@@ -575,14 +575,20 @@ template <class T>
   return std::nullopt;
 }
 
+template <class T>
+std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, contact_case which);
+
 // The fixed-bound step, for u, dy, phi inside the fast window (phi >= 0). Where
-// s0 leaves the window or the rounding test fails, the wider type's step or the
-// exact decision decides, from the best candidate at hand.
+// s0 leaves the window or the rounding test fails (as where (A.30)'s roots
+// merge under a stiff phi, and its margin widens), the value beside an input,
+// the wider type's step or the exact decision decides, from the best candidate
+// at hand.
 template <class T>
 traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
   auto [step, which] = fixed_bound_step(u, dy, phi);
   if (which == contact_case::free) return {{step.s0, which}, false};
   if (auto decided = rounded_by_step(step)) [[likely]] return {{*decided, which}, false};
+  if (auto beside = rounded_beside_an_input(u, dy, phi, which)) return {{*beside, which}, false};
   const solution<T> start{step.s0, which};
   return rounded_beyond_the_step<T>(u, dy, phi, &start);
 }
