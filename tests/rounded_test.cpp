@@ -683,12 +683,12 @@ decided_tally decided_against_reference(int count, Draw draw, Decide decide) {
 }
 
 // Physical u and dy (some of them powers of two, where the gap below halves) with
-// phi far above or below the plain window, as the phi scene draws them.
+// phi log-uniform over the binades [lowest_binade, highest_binade], as the phi
+// scene draws them: a draw for decided_against_reference.
 template <class T>
-decided_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
-  std::mt19937_64 random(seed);
-  auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
-  auto draw = [&] {
+auto physical_with_phi(std::uint64_t seed, int lowest_binade, int highest_binade) {
+  return [random = std::mt19937_64(seed), lowest_binade, highest_binade]() mutable {
+    auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
     auto physical = [&] {
       const T magnitude = (random() % 4 == 0) ? T(std::ldexp(1.0, int(uniform(-23, -10)))) : T(std::pow(10.0, uniform(-7, -3)));
       return random() % 2 ? magnitude : T(-magnitude);
@@ -696,6 +696,13 @@ decided_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binad
     const T u = physical(), dy = physical();
     return std::array<T, 3>{u, dy, T(std::ldexp(uniform(1, 2), int(uniform(lowest_binade, highest_binade))))};
   };
+}
+
+// With phi far above or below the plain window: how many the value beside an
+// input decides.
+template <class T>
+decided_tally beside_an_input_on(std::uint64_t seed, int count, int lowest_binade, int highest_binade) {
+  auto draw = physical_with_phi<T>(seed, lowest_binade, highest_binade);
   return decided_against_reference<T>(count, draw, [](const T& u, const T& dy, const T& phi, contact_case which) {
     return detail::rounded_beside_an_input(u, dy, phi, which);
   });
@@ -753,24 +760,19 @@ TEST(RoundedBesideAnInput, StiffImpactsWithUFarAboveDyRoundToDy) {
 // correctly rounded, and fewer than 1 in 100 take the exact decision.
 TYPED_TEST(RoundedFixedStep, StiffImpactsTheStepCannotDecideRoundToDy) {
   using T = TypeParam;
-  std::mt19937_64 random(97);
-  auto uniform = [&](double low, double high) { return std::uniform_real_distribution<double>(low, high)(random); };
-  int impacts = 0, exact_decisions = 0, wrong = 0;
-  for (int k = 0; k < 2000; ++k) {
-    const double a = std::pow(10.0, uniform(-7, -3)), b = std::pow(10.0, uniform(-7, -3));
-    const T u = T(std::max(a, b)), dy = T(-std::min(a, b));  // u > |dy|: (A.30) but for ties
-    const T phi = T(std::ldexp(uniform(1, 2), int(uniform(300, 1000))));
-    const auto exact = reference::solve(u, dy, phi);
-    if (exact.which != contact_case::impact) continue;
-    ++impacts;
-    const auto traced = detail::solve_rounded_traced(u, dy, phi);
-    exact_decisions += traced.exact_decision;
-    if (!correctly_rounded(traced.result.s, exact, u, dy, phi) && ++wrong <= 5)
-      ADD_FAILURE() << "u=" << u << " dy=" << dy << " phi=" << phi << ": " << traced.result.s;
-  }
-  EXPECT_EQ(wrong, 0);
-  EXPECT_GT(impacts, 1990);
-  EXPECT_LE(exact_decisions, impacts / 100);
+  long exact_decisions = 0;
+  const auto t = decided_against_reference<T>(
+      16000, physical_with_phi<T>(97, 300, 1000), [&](const T& u, const T& dy, const T& phi, contact_case) {
+        const auto traced = detail::solve_rounded_traced(u, dy, phi);
+        exact_decisions += traced.exact_decision;
+        return std::optional<T>(traced.result.s);
+      });
+  const int impact = static_cast<int>(contact_case::impact);
+  long solved = 0;
+  for (const long decided : t.decided) solved += decided;
+  EXPECT_EQ(t.wrong, 0);
+  EXPECT_GT(t.seen[impact], 1800);  // (about one draw in eight)
+  EXPECT_LE(exact_decisions, solved / 100);
 }
 
 // Near the window's edge the sliver is as wide as the gap: most inputs there are

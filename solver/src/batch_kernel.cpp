@@ -901,10 +901,13 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
                        hn::Vec<D> phi) {
     if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, count, lanes_of.m, u, dy, phi, offset, index);
   };
-  // the packs that may now take a moved lane keep offsets from here on (0 for the lanes they hold)
+  // the packs that may now take a moved lane keep offsets from here on (0 for
+  // the lanes they hold); the rounded mode's take unmoved lanes only
   auto keep_offsets = [](packed_lanes<T>& pack, std::ptrdiff_t count) {
-    if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
-    pack.moved = true;
+    if constexpr (!rounded_mode) {
+      if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
+      pack.moved = true;
+    }
   };
   keep_offsets(sorted.impacts, counts.impacts);
   keep_offsets(sorted.releases, counts.releases);

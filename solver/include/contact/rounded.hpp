@@ -526,7 +526,9 @@ struct cased_step {
   contact_case which;
 };
 
-// The step of a case decided before (not free flight).
+// The step of a case decided before (not free flight). A call, for the moves
+// beyond the window; fixed_bound_step, on the common path, inlines the steps
+// by case instead (a step returned from a call travels through memory).
 template <class T>
 rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy, const T& phi) {
   if (which == contact_case::impact) return rounded_form::impact_step(u, dy, phi);
@@ -669,8 +671,8 @@ traced_solution<T> rounded_beyond_the_step(const T& u, const T& dy, const T& phi
 //          and |s + u| = phi |u + 2 dy| / (1 + phi) <= 3 phi M; r = 2 dy for phi >= 1, else -u.
 //   (A.30), dy < 0 < dy + u, phi >= 1: s = dy - d, d the larger root of
 //          (1 + phi) d^2 - (2 dy + u) d + dy (dy + u) = 0 (dy (dy + u) < 0), so d <=
-//          |2 dy + u| / (1 + phi) + sqrt(|dy| (dy + u) / (1 + phi)) <= 3 M / phi + sqrt(|dy| u / phi),
-//          under twice the larger term; r = dy.
+//          |2 dy + u| / (1 + phi) + sqrt(|dy| (dy + u) / (1 + phi)) <= 3 M / phi + sqrt(|dy| M / phi)
+//          (M = u), under twice the larger term; r = dy.
 //   (A.30), phi <= 1/4: s = -u + e; with f(e) = e (u - e) - phi (dy + u - e)^2 = -Q(-u + e),
 //          f(0) < 0 and, at e1 = 2 phi (dy + u)^2 / u <= 2 phi u <= u / 2 (also <= 2 (dy + u)),
 //          f(e1) >= e1 u / 2 - phi (dy + u)^2 = 0: Q(-u) > 0 >= Q(-u + e1), so the smaller
@@ -706,7 +708,7 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
       if (dy == 0) return std::nullopt;  // (r = 0; and binade_of wants a non-zero x)
       r = dy;
       const int drift = largest + 3 - phi_binade;                          // 3 M / phi
-      const int spread = (binade_of(dy) + binade_of(u) + 3 - phi_binade) >> 1;  // sqrt(|dy| u / phi), rounded up
+      const int spread = (binade_of(dy) + largest + 3 - phi_binade) >> 1;  // sqrt(|dy| M / phi), rounded up
       sliver = std::max(drift, spread) + 1;
     } else if (phi <= T(0.25)) {
       r = -u;
