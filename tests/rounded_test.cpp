@@ -456,6 +456,39 @@ TYPED_TEST(RoundedFixedStep, StartsFromTheStableFormula) {
   for (long count : counts) EXPECT_GT(count, n / 20);
 }
 
+// The fast path's tests of the window, of phi's sign and of the ends' equality
+// read binary128's bits (its comparisons are library calls); they answer as
+// the comparisons do, at each edge and on every special value.
+TYPED_TEST(RoundedFixedStep, WindowTestsOnBitsAnswerAsComparisons) {
+  using T = TypeParam;
+  using std::fabs;
+  using std::isnan;
+  using std::ldexp;
+  using limits = std::numeric_limits<T>;
+  set_up_type<T>();
+  const int w = int(detail::safe_window<T>::half_width());
+  const T lowest = ldexp(T(1), -w), highest = ldexp(T(1), w);
+  std::vector<T> values = {T(0), limits::denorm_min(), limits::min(), T(1), T(3) / 2, (limits::max)(),
+                           limits::infinity(), limits::quiet_NaN()};
+  for (const T& edge : {lowest, highest})
+    for (const T& x : {detail::next_down(edge), edge, detail::next_up(edge)}) values.push_back(x);
+  const std::size_t positive = values.size();
+  for (std::size_t i = 0; i < positive; ++i) values.push_back(T(-values[i]));
+  for (const T& x : values) {
+    for (bool zero_allowed : {false, true}) {
+      const bool expected = x == 0 ? zero_allowed : (lowest <= fabs(x) && fabs(x) <= highest);
+      EXPECT_EQ(detail::in_fast_window(x, zero_allowed), expected) << x << (zero_allowed ? " (zero allowed)" : "");
+    }
+    if (!isnan(x)) EXPECT_EQ(detail::negative_phi(x), x < 0) << x;
+    for (const T& y : values) {
+      if (isnan(x) || isnan(y)) continue;
+      T rounded;
+      const bool alike = rounded_form::rounds_alike(rounded_form::fixed_step<T>{T(0), x, y}, rounded);
+      EXPECT_EQ(alike, T(x - y) == T(x + y)) << x << " " << y;
+    }
+  }
+}
+
 // (A.30)'s margin widens as Q's two roots merge (u just above -dy with a large phi:
 // s near dy, the other root at phi dy / (1 + phi)), and the result stays correctly
 // rounded there.

@@ -252,21 +252,41 @@ T signed_zero_for_root(const T& u, const T& dy, const T& phi) {
   return at_zero.sign() > 0 ? T(-0.0) : T(0);
 }
 
+// binary128 (Boost's float128), whose comparisons are library calls: x == 0
+// costs as much as an addition, so the fast path's tests read its bits.
+template <class T>
+inline constexpr bool compared_on_bits = emulated_format<T>::available && !std::is_floating_point_v<T>;
+
 // safe_window<T>::holds (|x| in [2^-w, 2^w] or x = 0, w = safe_window<T>::half_width()),
-// for double on the exponent bits; the fast path's analysis assumes u, dy, phi
-// and s0 there. zero_allowed: whether x = 0 passes.
+// on the bits for double, x87 long double and binary128; the fast path's
+// analysis assumes u, dy, phi and s0 there. zero_allowed: whether x = 0 passes.
 template <class T>
 bool in_fast_window(const T& x, bool zero_allowed) {
-  if (x == 0) return zero_allowed;
+  if constexpr (compared_on_bits<T>) {
+    if (emulated_format<T>::magnitude_key(x) == 0) return zero_allowed;
+  } else {
+    if (x == 0) return zero_allowed;
+  }
   if constexpr (std::is_same_v<T, double>) return magnitude_inside_plain_window(x);
   else return safe_window<T>::holds(x);
+}
+
+// phi < 0, for a phi that is not NaN.
+template <class T>
+bool negative_phi(const T& phi) {
+  if constexpr (compared_on_bits<T>) {
+    const uint128 bits = emulated_format<T>::bits_of(phi);
+    return (bits >> 127) != 0 && emulated_format<T>::magnitude_key(phi) != 0;
+  } else {
+    return phi < 0;
+  }
 }
 
 // A valid input whose u, dy and phi lie in the fast window (zeros included):
 // where the fixed-bound step is proven.
 template <class T>
 bool inputs_in_fast_window(const T& u, const T& dy, const T& phi) {
-  return in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !(phi < 0);
+  return in_fast_window(u, true) && in_fast_window(dy, true) && in_fast_window(phi, true) && !negative_phi(phi);
 }
 
 }  // namespace detail
@@ -444,12 +464,16 @@ template <class T>
   return {step.s0 + (step.delta - step.margin), step.s0 + (step.delta + step.margin)};
 }
 
-// When both ends round alike, the root rounds so.
+// When both ends round alike, the root rounds so. (binary128's ends are
+// compared as bits: equal bits are equal values, and the only equal values
+// with unequal bits, -0 and +0, merely fail the test.)
 template <class T>
 [[gnu::always_inline]] inline bool rounds_alike(const fixed_step<T>& step, T& rounded) {
   const auto [below, above] = rounded_ends(step);
   rounded = above;
-  return below == above;
+  if constexpr (detail::compared_on_bits<T>)
+    return detail::emulated_format<T>::bits_of(below) == detail::emulated_format<T>::bits_of(above);
+  else return below == above;
 }
 
 // float: the stable path's formulas run in double. Their proven bounds

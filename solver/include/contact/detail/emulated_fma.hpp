@@ -111,9 +111,13 @@ struct emulated_format<boost::multiprecision::number<boost::multiprecision::back
     const uint128 bits = (uint128(negative) << 127) | (uint128(top + wide_bias) << 112) | (significand - hidden);
     return type(std::bit_cast<__float128>(bits));
   }
+  template <class X>
+  static uint128 bits_of(const X& x) {
+    return std::bit_cast<uint128>(x.backend().value());
+  }
   template <class X>  // IEEE's bit patterns of magnitudes count the values already
   static uint128 magnitude_key(const X& x) {
-    return std::bit_cast<uint128>(x.backend().value()) & ~(uint128(1) << 127);
+    return bits_of(x) & ~(uint128(1) << 127);
   }
   static type from_magnitude_key(uint128 key, bool negative) {
     return type(std::bit_cast<__float128>(key | uint128(negative) << 127));
