@@ -521,6 +521,14 @@ template <class Num>
 
 namespace detail {
 
+// u, dy, phi as the rounded mode's calls take them: float and double by value,
+// in registers (by reference, the caller stores them and the callee loads them
+// back, on the common path); the wider types by reference (x87 long double
+// travels through memory either way, and its copies cost more than its loads:
+// docs/performance.md).
+template <class T>
+using operand = std::conditional_t<hardware_binary<T>, T, const T&>;
+
 template <class T>
 struct traced_solution {
   solution<T> result;
@@ -610,7 +618,7 @@ std::optional<T> rounded_beside_an_input(const T& u, const T& dy, const T& phi, 
 // the wider type's step or the exact decision decides, from the best candidate
 // at hand.
 template <class T>
-traced_solution<T> rounded_by_fixed_bound(const T& u, const T& dy, const T& phi) {
+traced_solution<T> rounded_by_fixed_bound(operand<T> u, operand<T> dy, operand<T> phi) {
   auto [step, which] = fixed_bound_step(u, dy, phi);
   if (which == contact_case::free) return {{step.s0, which}, false};
   if (auto decided = rounded_by_step(step)) [[likely]] return {{*decided, which}, false};
@@ -840,9 +848,9 @@ inline std::optional<double> rounded_by_moves(double u, double dy, double phi, c
 // beside an input, double's moves into the window, else the wider type's step
 // or the exact decision.
 template <class T>
-[[gnu::noinline]] traced_solution<T> solve_rounded_general(const T& u, const T& dy, const T& phi) {
+[[gnu::noinline]] traced_solution<T> solve_rounded_general(operand<T> u, operand<T> dy, operand<T> phi) {
   if constexpr (rounded_form::has_fixed_bounds<T>) {
-    if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound(u, dy, phi);
+    if (inputs_in_fast_window(u, dy, phi)) return rounded_by_fixed_bound<T>(u, dy, phi);
   }
   if (!reject_invalid(u, dy, phi)) {
     const contact_case which = exact_case(u, dy, phi);
@@ -871,9 +879,9 @@ template <class T>
     return rounded_by_exact_decision<T>(u, dy, phi, isfinite(result.s) ? &result : nullptr);
   } else {
     if constexpr (std::is_same_v<T, double>) {
-      if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound(u, dy, phi);
+      if (inside_plain_window(u, dy, phi)) [[likely]] return rounded_by_fixed_bound<T>(u, dy, phi);
     }
-    return solve_rounded_general(u, dy, phi);
+    return solve_rounded_general<T>(u, dy, phi);
   }
 }
 
