@@ -400,6 +400,7 @@ TEST(RoundedFastPath, FixedBoundsAreTheProvenOnes) {
     code["impact_" + type] = std::ldexp(1.0, exponents::impact);
     code["release_" + type] = std::ldexp(1.0, exponents::release);
   };
+  add("float", rounded_form::fixed_bound_exponents<24>{});
   add("double", rounded_form::fixed_bound_exponents<53>{});
   add("long_double", rounded_form::fixed_bound_exponents<64>{});
   add("float128", rounded_form::fixed_bound_exponents<113>{});

@@ -484,7 +484,9 @@ HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, std::ptrdiff_t& cou
 // or the lane unmoved, or s normal above the least binade before the move and
 // normal after it (solve_stable's moved_back); `moved_back` is false on the
 // others, which underflow or overflow once moved back: solve_stable solves them.
-template <class D>
+// (exact_only: the rounded mode's, whose s moves back only where exactly: the
+// others would round twice.)
+template <bool exact_only, class D>
 HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> offset, hn::Mask<D>& moved_back,
                               hn::Mask<D>& below_normal) {
   using layout = detail::binary_layout<hn::TFromD<D>>;
@@ -502,7 +504,7 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
                     hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal)));
   const auto moved = hn::IfThenElse(hn::RebindMask(d, unmoved), s.v, hn::BitCast(d, hn::Sub(s_bits, offset)));
   moved_back = hn::RebindMask(d, hn::Or(unmoved, hn::And(above_least_binade, normal_once_moved)));
-  if (hn::AllTrue(d, moved_back)) [[likely]] return moved;
+  if (exact_only || hn::AllTrue(d, moved_back)) [[likely]] return moved;
   // a release root from 2^(max_exponent + 1) up once moved back: infinity, as
   // solve_stable's move_back gives it (the binade 2^max_exponent, just beyond
   // the largest T, stays with solve_stable)
@@ -537,10 +539,18 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 
 // ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
 //
-// The lanes inside the fast window take solve_rounded's fixed-bound step
+// The lanes inside the common window take solve_rounded's fixed-bound step
 // (rounded_form's steps, on lanes) and its rounding test; the root rounds as
 // both ends of the step's interval round. A lane whose test fails, or whose
 // s0 leaves the plain window, gets NaN: solve_rounded decides it.
+
+// float's step is proven on float lanes only where no product of the step
+// rounds below the normal range (docs/equations.md section 7): u and dy from
+// 2^L are multiples of 2^(L - 23), phi from 2^M of 2^(M - 23), and the deepest
+// product, phi (dy - s0)^2's error term, is a multiple of their product.
+static_assert(2 * (detail::common_window_least_uv<float> - (std::numeric_limits<float>::digits - 1)) +
+                      (detail::common_window_least_phi<float> - (std::numeric_limits<float>::digits - 1)) >=
+                  std::numeric_limits<float>::min_exponent - 1);
 
 // x normal (not zero) inside the plain window: detail::magnitude_inside_plain_window
 template <class D>
@@ -574,19 +584,6 @@ HWY_INLINE lanes<D> rounded_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 template <class D>
 HWY_INLINE lanes<D> rounded_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return rounded_or_undecided(D(), rounded_form::release_step(u, dy, phi));
-}
-
-// float's rounding test on double lanes (rounded_form::round_through_double):
-// s, float's stable root computed in double, where both ends of its bound
-// round to one float; NaN (solve_rounded in float) where they do not.
-template <class D>
-HWY_INLINE lanes<D> through_double(lanes<D> s) {
-  static_assert(std::is_same_v<hn::TFromD<D>, double>);
-  const hn::Rebind<float, D> df;
-  const lanes<D> bound = rounded_form::through_double_bound(s);
-  const auto below = hn::PromoteTo(D(), hn::DemoteTo(df, (s - bound).v));
-  const auto above = hn::PromoteTo(D(), hn::DemoteTo(df, (s + bound).v));
-  return hn::IfThenElse(hn::Eq(below, above), above, hn::Set(D(), std::numeric_limits<double>::quiet_NaN()));
 }
 
 // The exact stage (detail::stage::exact) of the lanes too far apart for the
@@ -629,29 +626,23 @@ HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
 }
 
-// What a kernel computes: solve_stable's results, solve_rounded's, or
-// solve_rounded's in float on lanes widened to double (rounded_float).
-enum class kernel_mode { stable, rounded, rounded_float };
+// What a kernel computes: solve_stable's results or solve_rounded's.
+enum class kernel_mode { stable, rounded };
 
 // The scalar path of each mode, for the lanes the vectors leave.
 template <kernel_mode mode, class T>
 void solve_lane(T u, T dy, T phi, T& s, int& which) {
   if constexpr (mode == kernel_mode::stable) {
     solve_stable_lane(u, dy, phi, s, which);
-  } else if constexpr (mode == kernel_mode::rounded) {
+  } else {
     solve_rounded_lane(u, dy, phi, s, which);
-  } else {  // (the lanes are floats, exact in double)
-    float rounded;
-    solve_rounded_lane(float(u), float(dy), float(phi), rounded, which);
-    s = rounded;
   }
 }
 
 // The packed lanes' s by `answer`, written to their places (their cases are
 // written by the first pass); those whose s is NaN or cannot move back, by
 // the scalar path. Returns how many those were. `clamp` (s, u, dy) is the
-// lanes' clamp onto the side of dy of their case. (The rounded mode's packs
-// hold no moved lane.)
+// lanes' clamp onto the side of dy of their case.
 template <kernel_mode mode, class D, class Answer, class Clamp>
 HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
                                        const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
@@ -673,7 +664,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
       const L moved_s = s;
       const auto offset = hn::Load(du, lanes_in.offset + k);
       auto below_normal = hn::FirstN(d, 0);
-      s = move_back(d, s, offset, moved_back, below_normal);
+      s = move_back<mode == kernel_mode::rounded>(d, s, offset, moved_back, below_normal);
       if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
         // an s that lands below the normal binades once moved back: rounded
         // once there, as solve_stable's move_back_below_normal rounds it
@@ -775,43 +766,62 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     }
     const auto u_field = u_read.field, dy_field = dy_read.field;
     const auto larger = hn::Max(u_field, dy_field), smaller = hn::Min(u_field, dy_field);
-    const auto band = hn::ShiftRight<fields::bands::band_bits>(
-        hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
-    const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))),
-                                      hn::GatherIndex(di, fields::impact_lowest.data(), band),
-                                      hn::GatherIndex(di, fields::lowest.data(), band));
-    const auto shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
     // a subnormal phi in double: every subnormal binade lies in the first band
     // (in float they straddle two: solve_stable takes them)
     constexpr bool subnormal_phi_in_vectors = ((-layout::bias - fields::bands::least_binade) >> fields::bands::band_bits) == 0;
-    const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
-    const auto phi_in_a_band =
-        unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
     const auto finite_uv = hn::AndNot(hn::RebindMask(di, inside), hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy))));
-    const auto normal_in_band = hn::And(finite_uv, hn::RebindMask(di, phi_in_a_band));
-    const auto too_far = hn::Lt(hn::Add(smaller, shift), least);
-    const auto fits = hn::AndNot(too_far, normal_in_band);
-    // u and dy too far apart for the band, or a finite phi beyond the last
-    // band (outside safe_window: safe_window<T>::holds bounds phi far below
-    // it): solve_stable's exact stage, on scaled_lanes, for the impacts, and
-    // for the contacts and releases whose case the dominant binade decides
-    // (detail::sign_of_dominant_binade, on the exponent fields); the others
-    // stay with solve_stable
-    static_assert(detail::plain_window<T> < fields::bands::last_phi_binade);
-    const auto beyond_bands = hn::RebindMask(di, hn::And(hn::Ge(phi, hn::Set(d, fields::bands::end)), hn::IsFinite(phi)));
-    const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands)));
-    if (!hn::AllFalse(di, far)) [[unlikely]] {
-      const auto phi_field = read_normal(d, hn::And(phi_bits, magnitude)).field;
-      const auto product_field = hn::Sub(hn::Add(phi_field, dy_field), hn::Set(di, layout::bias));  // phi dy in [2^field, 2^(field + 2))
-      const auto one = hn::Set(di, 1), two = hn::Set(di, 2);
-      const auto u_wins = hn::Gt(u_field, hn::Max(hn::Add(dy_field, one), hn::Add(product_field, two)));
-      const auto dy_wins = hn::Gt(dy_field, hn::Max(hn::Add(u_field, one), hn::Add(product_field, two)));
-      const auto product_wins = hn::Gt(product_field, hn::Add(larger, one));
-      const auto u_positive = hn::RebindMask(di, hn::Gt(u, hn::Zero(d)));
-      const auto contact_side = hn::RebindMask(di, hn::Gt(dy, hn::Zero(d)));
-      far_impact.m = hn::RebindMask(d, hn::AndNot(contact_side, far));
-      far_contact.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(dy_wins, hn::And(u_wins, u_positive))));
-      far_release.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(product_wins, hn::AndNot(u_positive, u_wins))));
+    auto shift = hn::Zero(di);     // the move of u and dy, in binades
+    auto fits = hn::FirstN(di, 0);  // the lanes it takes
+    if constexpr (rounded_mode) {
+      // The rounded mode's step is proven inside the common window only (phi's
+      // band would move u and dy beyond it): where phi lies in the window's
+      // range and u and dy are normal and less than its width apart, one exact
+      // move by 2^shift, the larger to the window's top binade, brings the lane
+      // inside, in the same case, its root moved by 2^shift; solve_rounded takes
+      // the others (the far lanes too).
+      constexpr int top = layout::bias + detail::common_window_least_uv<T> + 2 * detail::common_window<T> - 1;
+      constexpr int bottom = layout::bias + detail::common_window_least_uv<T>;
+      const auto phi_inside = unsigned_less(du, hn::Sub(phi_bits, hn::Set(du, detail::common_window_lowest_phi<T>)),
+                                            hn::Set(du, detail::common_window_width<T>));
+      const auto normal_uv = hn::And(hn::Gt(field_of(abs_u), hn::Zero(di)), hn::Gt(field_of(abs_dy), hn::Zero(di)));
+      shift = hn::Sub(hn::Set(di, top), larger);
+      fits = hn::AndNot(hn::Lt(hn::Add(smaller, shift), hn::Set(di, bottom)),
+                        hn::And(hn::And(finite_uv, normal_uv), hn::RebindMask(di, phi_inside)));
+    } else {
+      const auto band = hn::ShiftRight<fields::bands::band_bits>(
+          hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
+      const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))),
+                                        hn::GatherIndex(di, fields::impact_lowest.data(), band),
+                                        hn::GatherIndex(di, fields::lowest.data(), band));
+      shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
+      const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
+      const auto phi_in_a_band =
+          unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
+      const auto normal_in_band = hn::And(finite_uv, hn::RebindMask(di, phi_in_a_band));
+      const auto too_far = hn::Lt(hn::Add(smaller, shift), least);
+      fits = hn::AndNot(too_far, normal_in_band);
+      // u and dy too far apart for the band, or a finite phi beyond the last
+      // band (outside safe_window: safe_window<T>::holds bounds phi far below
+      // it): solve_stable's exact stage, on scaled_lanes, for the impacts, and
+      // for the contacts and releases whose case the dominant binade decides
+      // (detail::sign_of_dominant_binade, on the exponent fields); the others
+      // stay with solve_stable
+      static_assert(detail::plain_window<T> < fields::bands::last_phi_binade);
+      const auto beyond_bands = hn::RebindMask(di, hn::And(hn::Ge(phi, hn::Set(d, fields::bands::end)), hn::IsFinite(phi)));
+      const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands)));
+      if (!hn::AllFalse(di, far)) [[unlikely]] {
+        const auto phi_field = read_normal(d, hn::And(phi_bits, magnitude)).field;
+        const auto product_field = hn::Sub(hn::Add(phi_field, dy_field), hn::Set(di, layout::bias));  // phi dy in [2^field, 2^(field + 2))
+        const auto one = hn::Set(di, 1), two = hn::Set(di, 2);
+        const auto u_wins = hn::Gt(u_field, hn::Max(hn::Add(dy_field, one), hn::Add(product_field, two)));
+        const auto dy_wins = hn::Gt(dy_field, hn::Max(hn::Add(u_field, one), hn::Add(product_field, two)));
+        const auto product_wins = hn::Gt(product_field, hn::Add(larger, one));
+        const auto u_positive = hn::RebindMask(di, hn::Gt(u, hn::Zero(d)));
+        const auto contact_side = hn::RebindMask(di, hn::Gt(dy, hn::Zero(d)));
+        far_impact.m = hn::RebindMask(d, hn::AndNot(contact_side, far));
+        far_contact.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(dy_wins, hn::And(u_wins, u_positive))));
+        far_release.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(product_wins, hn::AndNot(u_positive, u_wins))));
+      }
     }
     answerable.m = hn::Or(inside, hn::RebindMask(d, fits));
     offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, shift)));
@@ -830,10 +840,6 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
       moved_dy = hn::IfThenElse(answerable.m, hn::BitCast(d, hn::Add(dy_bits, offset)), one);
     }
     moved_phi = hn::IfThenElse(answerable.m, phi, one);
-    // The rounded mode's step is proven inside the plain window; phi's band
-    // moves u and dy beyond it (to 2^389 and above where phi lies inside it):
-    // solve_rounded takes the lanes it would move.
-    if constexpr (rounded_mode) answerable.m = hn::And(answerable.m, inside);
     phi_factor = moved_phi;
     dy_factor = moved_dy;
     if constexpr (subnormal_phi_in_vectors) {
@@ -902,12 +908,10 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, count, lanes_of.m, u, dy, phi, offset, index);
   };
   // the packs that may now take a moved lane keep offsets from here on (0 for
-  // the lanes they hold); the rounded mode's take unmoved lanes only
+  // the lanes they hold)
   auto keep_offsets = [](packed_lanes<T>& pack, std::ptrdiff_t count) {
-    if constexpr (!rounded_mode) {
-      if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
-      pack.moved = true;
-    }
+    if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
+    pack.moved = true;
   };
   keep_offsets(sorted.impacts, counts.impacts);
   keep_offsets(sorted.releases, counts.releases);
@@ -942,10 +946,11 @@ std::ptrdiff_t solve_each_lane(packed_lanes<T>& pack, const T* u, const T* dy, c
 constexpr std::ptrdiff_t prefetch_distance = 2 * block;
 constexpr std::ptrdiff_t streamed_lanes = std::ptrdiff_t(1) << 15;
 
-// solve_batch, or solve_rounded_batch in the rounded modes: the first pass is
-// the same (the exact case of every lane, free flight answered); the rounded
-// modes answer the lanes of the plain packs by their fixed-bound step and
-// rounding test and leave the rest to solve_rounded.
+// solve_batch, or solve_rounded_batch in the rounded mode: the first pass is
+// the same (the exact case of every lane, free flight answered, but moves
+// into the common window in place of phi's bands); the rounded mode answers
+// the lanes of the case packs by their fixed-bound step and rounding test and
+// leaves the rest to solve_rounded.
 template <kernel_mode mode, class T>
 std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
   std::ptrdiff_t i = 0, left = 0;
@@ -983,18 +988,11 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
       left += solve_packed<mode>(d, contacts, u, dy, phi, s, which, contact, contact_clamp);
     };
     if constexpr (mode == kernel_mode::rounded) {
+      // (the rounded mode's first pass packs no lane of a subnormal phi and no
+      // far lane: phi lies in the common window's range, and the far lanes go
+      // with the scalar pack)
       solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return rounded_impacts<D>(x...); },
                   [](auto... x) { return rounded_releases<D>(x...); }, [](auto... x) { return rounded_contacts<D>(x...); });
-    } else if constexpr (mode == kernel_mode::rounded_float) {
-      solve_cases(sorted.impacts, sorted.releases, sorted.contacts,
-                  [](L u, L dy, L phi) { return through_double(stable_form::impact(u, -dy, phi)); },
-                  [](L u, L dy, L phi) { return through_double(stable_form::release(u, dy, phi)); },
-                  [](L u, L dy, L phi) { return through_double(stable_form::contact(u, dy, phi)); });
-    }
-    if constexpr (mode != kernel_mode::stable) {
-      for (auto* pack : {&sorted.impacts_of_subnormal_phi, &sorted.releases_of_subnormal_phi, &sorted.contacts_of_subnormal_phi,
-                         &sorted.far_impacts, &sorted.far_contacts, &sorted.far_releases})
-        left += solve_each_lane<mode>(*pack, u, dy, phi, s, which);
     } else {
       solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return answer_impacts<D, false>(x...); },
                   [](auto... x) { return answer_releases<D, false>(x...); }, [](auto... x) { return answer_contacts<D, false>(x...); });
@@ -1029,39 +1027,9 @@ std::ptrdiff_t solve_rounded_double(const double* u, const double* dy, const dou
   return solve<kernel_mode::rounded>(u, dy, phi, s, which, n);
 }
 
-// float's rounded mode runs in double (rounded_form::round_through_double):
-// block by block, the lanes widened, solved on double vectors, narrowed back
-// (exactly: each s is a float).
 std::ptrdiff_t solve_rounded_float(const float* u, const float* dy, const float* phi, float* s, int* which,
                                    std::ptrdiff_t n) {
-  alignas(64) double wide_u[block], wide_dy[block], wide_phi[block], wide_s[block];
-  std::ptrdiff_t left = 0;
-  for (std::ptrdiff_t first = 0; first < n; first += block) {
-    const std::ptrdiff_t count = std::min(block, n - first);
-    std::ptrdiff_t k = 0;
-#if HWY_NATIVE_FMA
-    const hn::ScalableTag<double> d;
-    const hn::Rebind<float, decltype(d)> df;
-    const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
-    for (; k + width <= count; k += width) {
-      hn::Store(hn::PromoteTo(d, hn::LoadU(df, u + first + k)), d, wide_u + k);
-      hn::Store(hn::PromoteTo(d, hn::LoadU(df, dy + first + k)), d, wide_dy + k);
-      hn::Store(hn::PromoteTo(d, hn::LoadU(df, phi + first + k)), d, wide_phi + k);
-    }
-#endif
-    for (; k < count; ++k) {
-      wide_u[k] = u[first + k];
-      wide_dy[k] = dy[first + k];
-      wide_phi[k] = phi[first + k];
-    }
-    left += solve<kernel_mode::rounded_float>(wide_u, wide_dy, wide_phi, wide_s, which + first, count);
-    k = 0;
-#if HWY_NATIVE_FMA
-    for (; k + width <= count; k += width) hn::StoreU(hn::DemoteTo(df, hn::Load(d, wide_s + k)), df, s + first + k);
-#endif
-    for (; k < count; ++k) s[first + k] = static_cast<float>(wide_s[k]);
-  }
-  return left;
+  return solve<kernel_mode::rounded>(u, dy, phi, s, which, n);
 }
 
 }  // namespace contact::batch_kernels::CONTACT_BATCH_KERNEL_NAME

@@ -27,7 +27,7 @@ struct batch_target {
   // solve_batch on this kernel; returns how many lanes it left to solve_stable
   std::ptrdiff_t (*solve_double)(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n);
   std::ptrdiff_t (*solve_float)(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n);
-  // solve_rounded_batch on this kernel (float: on double vectors); returns how many lanes it left to solve_rounded
+  // solve_rounded_batch on this kernel; returns how many lanes it left to solve_rounded
   std::ptrdiff_t (*solve_rounded_double)(const double* u, const double* dy, const double* phi, double* s, int* which,
                                          std::ptrdiff_t n);
   std::ptrdiff_t (*solve_rounded_float)(const float* u, const float* dy, const float* phi, float* s, int* which,
@@ -86,11 +86,10 @@ void solve_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::p
 }
 
 // The same for solve_rounded: every lane gets exactly solve_rounded's s and
-// case. In double the kernels take the lanes inside the common window by the
-// fixed-bound step and its rounding test (rounded.hpp) in vectors; float's
-// lanes, widened to double, take float's own test there (the stable formulas
-// in double, round_through_double). The lanes whose test fails, and every
-// other lane, take solve_rounded. The other types run solve_rounded lane by
+// case. In float and double the kernels take the lanes inside the common
+// window by the fixed-bound step and its rounding test (rounded.hpp) in
+// vectors. The lanes whose test fails, and every other lane, take
+// solve_rounded. The other types run solve_rounded lane by
 // lane. The types of
 // contact::rounded_available only.
 template <class T>

@@ -44,8 +44,9 @@ inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && s
 //    Q(s0) evaluated by error-free transformations, gives s0 + delta within
 //    about 2^-2p |s| of the root. The bound's constants, per case and type,
 //    are proven by Gappa from the stable path's proven bound
-//    (fixed_bound_exponents). float runs the stable formulas in
-//    double instead (round_through_double).
+//    (fixed_bound_exponents). float's scalar path runs the stable formulas
+//    in double instead (round_through_double); the float batch kernel takes
+//    the step on float lanes inside float's common window.
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
 //    rounds as s0 + delta does.
@@ -337,11 +338,12 @@ template <class T>
 // case and per significand width ((A.30)'s grows as its two roots merge, below):
 // proofs/gappa/rounded_<case>.g proves the
 // relative bound from the stable path's proven bound on |s0 - s*|
-// (claimed_bounds.txt, proven for 53, 64 and 113 bits), and gappa_rounded checks
+// (claimed_bounds.txt, proven for 24, 53, 64 and 113 bits), and gappa_rounded checks
 // that K covers it and the rounding test's own roundings
 // (proofs/rounded_bounds.txt, which rounded_test holds these constants to). The
 // models assume that no operation of the step over- or underflows, which holds
-// when u, dy, phi and s0 lie in safe_window (docs/equations.md section 7). Each
+// when u, dy, phi and s0 lie in safe_window (docs/equations.md section 7; for
+// float, only in its common window). Each
 // case's slope is the exact derivative at the root, a quantity the stable formula
 // already has (1 + phi, or the square root of the discriminant), so its reciprocal
 // is computed alongside s0 rather than after the residual; Q(s0) is evaluated with
@@ -351,6 +353,13 @@ template <class T>
 // path (the exact decision decides).
 template <int Digits>
 struct fixed_bound_exponents {};
+// binary32: the float batch kernel's lanes, inside float's common window only,
+// whose floors keep every product of the step normal (docs/equations.md
+// section 7); float's scalar path rounds through double (below).
+template <>
+struct fixed_bound_exponents<24> {
+  static constexpr int contact = -42, impact = -39, release = -39;
+};
 template <>
 struct fixed_bound_exponents<53> {  // binary64
   static constexpr int contact = -100, impact = -97, release = -96;
@@ -485,13 +494,6 @@ template <class T>
 // (overflow and the subnormals included): where both ends round to one float,
 // so does the root. Both ends have the sign of s, which is the root's (the bound
 // is relative), so a zero has the right sign; a zero s is an exact (A.31) root, +0.
-// (The bound is also the float batch kernel's, on double lanes: Num is
-// double or a vector of doubles.)
-template <class Num>
-[[gnu::always_inline]] inline Num through_double_bound(const Num& s) {
-  using std::fabs;
-  return fabs(s) * Num(0x1p-49);
-}
 
 [[gnu::always_inline]] inline bool round_through_double(const float& u, const float& dy, const float& phi,
                                                         solution<float>& out) {
@@ -511,7 +513,7 @@ template <class Num>
     out.which = contact_case::release;  // (A.32)
     s = stable_form::release(wide_u, wide_dy, wide_phi);
   }
-  const double bound = through_double_bound(s);
+  const double bound = std::fabs(s) * 0x1p-49;
   const float below = static_cast<float>(s - bound), above = static_cast<float>(s + bound);
   out.s = above;  // the exact decision's candidate if the test below fails
   return below == above;
