@@ -539,10 +539,10 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 
 // ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
 //
-// The lanes inside the common window take solve_rounded's fixed-bound step
-// (rounded_form's steps, on lanes) and its rounding test; the root rounds as
-// both ends of the step's interval round. A lane whose test fails, or whose
-// s0 leaves the plain window, gets NaN: solve_rounded decides it.
+// The lanes inside the common window, or moved into it, take solve_rounded's
+// fixed-bound step (rounded_form's steps, on lanes) and its rounding test; the
+// root rounds as both ends of the step's interval round. A lane whose test
+// fails, or whose s0 leaves the plain window, gets NaN: solve_rounded decides it.
 
 // float's step is proven on float lanes only where no product of the step
 // rounds below the normal range (docs/equations.md section 7): u and dy from
@@ -756,9 +756,10 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     auto field_of = [&](hn::Vec<decltype(du)> magnitude_bits) {
       return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
     };
-    // subnormal u and dy read as normal values (read_normal), on the vectors that hold one
+    // subnormal u and dy read as normal values (read_normal), on the vectors
+    // that hold one (the rounded mode moves normal u and dy only: it reads none)
     normal_reading<D> u_read{hn::BitCast(d, abs_u), field_of(abs_u)}, dy_read{hn::BitCast(d, abs_dy), field_of(abs_dy)};
-    const bool subnormal_uv = !hn::AllTrue(du, unsigned_less(du, hn::Sub(hn::Min(abs_u, abs_dy), least_normal),
+    const bool subnormal_uv = !rounded_mode && !hn::AllTrue(du, unsigned_less(du, hn::Sub(hn::Min(abs_u, abs_dy), least_normal),
                                                               hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal))));
     if (subnormal_uv) [[unlikely]] {
       u_read = read_normal(d, abs_u);
@@ -783,7 +784,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
       constexpr int bottom = layout::bias + detail::common_window_least_uv<T>;
       const auto phi_inside = unsigned_less(du, hn::Sub(phi_bits, hn::Set(du, detail::common_window_lowest_phi<T>)),
                                             hn::Set(du, detail::common_window_width<T>));
-      const auto normal_uv = hn::And(hn::Gt(field_of(abs_u), hn::Zero(di)), hn::Gt(field_of(abs_dy), hn::Zero(di)));
+      const auto normal_uv = hn::And(hn::Gt(u_field, hn::Zero(di)), hn::Gt(dy_field, hn::Zero(di)));
       shift = hn::Sub(hn::Set(di, top), larger);
       fits = hn::AndNot(hn::Lt(hn::Add(smaller, shift), hn::Set(di, bottom)),
                         hn::And(hn::And(finite_uv, normal_uv), hn::RebindMask(di, phi_inside)));
