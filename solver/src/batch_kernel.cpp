@@ -542,7 +542,8 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 // The lanes inside the common window, or moved into it, take solve_rounded's
 // fixed-bound step (rounded_form's steps, on lanes) and its rounding test; the
 // root rounds as both ends of the step's interval round. A lane whose test
-// fails, or whose s0 leaves the plain window, gets NaN: solve_rounded decides it.
+// fails, or whose s0 leaves the plain window, gets NaN: solve_rounded decides it
+// (in float, first through double on double vectors: left_lanes).
 
 // float's step is proven on float lanes only where no product of the step
 // rounds below the normal range (docs/equations.md section 7): u and dy from
@@ -586,6 +587,19 @@ HWY_INLINE lanes<D> rounded_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return rounded_or_undecided(D(), rounded_form::release_step(u, dy, phi));
 }
 
+// float's stable root s, computed on double lanes that hold floats
+// (rounded_form::round_through_double, solve_rounded<float>'s own test): s where
+// both ends of its bound round to one float, NaN (solve_rounded) where not.
+template <class D>
+HWY_INLINE lanes<D> through_double(lanes<D> s) {
+  static_assert(std::is_same_v<hn::TFromD<D>, double>);
+  const hn::Rebind<float, D> df;
+  const lanes<D> bound = rounded_form::through_double_bound(s);
+  const auto below = hn::PromoteTo(D(), hn::DemoteTo(df, (s - bound).v));
+  const auto above = hn::PromoteTo(D(), hn::DemoteTo(df, (s + bound).v));
+  return hn::IfThenElse(hn::Eq(below, above), above, hn::Set(D(), std::numeric_limits<double>::quiet_NaN()));
+}
+
 // The exact stage (detail::stage::exact) of the lanes too far apart for the
 // band, each case on scaled_lanes; a lane scaled_lanes did not carry, or a
 // release root that rounds to infinity below 2^(max_exponent + 2) (only the
@@ -626,27 +640,135 @@ HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
 }
 
-// What a kernel computes: solve_stable's results or solve_rounded's.
-enum class kernel_mode { stable, rounded };
+// What a kernel computes: solve_stable's results, solve_rounded's, or
+// solve_rounded's in float on double lanes that hold floats (through_double).
+enum class kernel_mode { stable, rounded, rounded_through_double };
 
 // The scalar path of each mode, for the lanes the vectors leave.
 template <kernel_mode mode, class T>
 void solve_lane(T u, T dy, T phi, T& s, int& which) {
   if constexpr (mode == kernel_mode::stable) {
     solve_stable_lane(u, dy, phi, s, which);
-  } else {
+  } else if constexpr (mode == kernel_mode::rounded) {
     solve_rounded_lane(u, dy, phi, s, which);
+  } else {  // (exact: the lanes hold floats)
+    float rounded;
+    solve_rounded_lane(float(u), float(dy), float(phi), rounded, which);
+    s = rounded;
   }
 }
 
+template <kernel_mode mode, class T>
+std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n);
+
+// The lanes the vectors leave, each solved at once by the mode's scalar path.
+template <kernel_mode mode, class T>
+struct left_lanes {
+  const T *u, *dy, *phi;
+  T* s;
+  int* which;
+  std::ptrdiff_t count = 0;  // how many the scalar path solved
+  void take(std::ptrdiff_t i) {
+    solve_lane<mode>(u[i], dy[i], phi[i], s[i], which[i]);
+    ++count;
+  }
+  void finish() {}
+};
+
+// float's rounded mode: float's step reaches less far than float's stable
+// formulas in double (phi above float's common window, a root that leaves the
+// plain window far below its inputs), which solve_rounded<float> itself runs
+// (rounded_form::round_through_double). The lanes float's vectors leave are
+// gathered, widened (exactly) and solved on double vectors by them, a block at
+// a time; the scalar path takes what those leave.
+template <>
+struct left_lanes<kernel_mode::rounded, float> {
+  const float *u, *dy, *phi;
+  float* s;
+  int* which;
+  std::ptrdiff_t count = 0;
+  std::ptrdiff_t gathered = 0;
+  static constexpr std::ptrdiff_t few_lanes = 8;  // fewer go to solve_rounded at once
+  alignas(64) std::int32_t index[block + 64];  // (whole vectors past `gathered`)
+  void take(std::ptrdiff_t i) {
+    index[gathered++] = static_cast<std::int32_t>(i);
+    if (gathered == block) finish();
+  }
+  void finish() {
+    if (gathered < few_lanes) {  // (a pass over double vectors would cost more)
+      for (std::ptrdiff_t k = 0; k < gathered; ++k) {
+        const std::int32_t i = index[k];
+        solve_lane<kernel_mode::rounded>(u[i], dy[i], phi[i], s[i], which[i]);
+      }
+      count += gathered;
+      gathered = 0;
+      return;
+    }
+    const hn::ScalableTag<double> d;
+    const hn::Rebind<float, decltype(d)> df;
+    const hn::Rebind<std::int32_t, decltype(d)> di;
+    const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
+    const std::ptrdiff_t padded = (gathered + width - 1) / width * width;
+    std::fill(index + gathered, index + padded, index[0]);
+    alignas(64) double wide_u[block + 64], wide_dy[block + 64], wide_phi[block + 64], wide_s[block + 64];
+    alignas(64) int wide_which[block + 64];
+    for (std::ptrdiff_t k = 0; k < padded; k += width) {
+      const auto at = hn::Load(di, index + k);
+      hn::Store(hn::PromoteTo(d, hn::GatherIndex(df, u, at)), d, wide_u + k);
+      hn::Store(hn::PromoteTo(d, hn::GatherIndex(df, dy, at)), d, wide_dy + k);
+      hn::Store(hn::PromoteTo(d, hn::GatherIndex(df, phi, at)), d, wide_phi + k);
+    }
+    std::fill(wide_u + gathered, wide_u + padded, 1.0);  // the padding solves 1 = 1 = 1
+    std::fill(wide_dy + gathered, wide_dy + padded, 1.0);
+    std::fill(wide_phi + gathered, wide_phi + padded, 1.0);
+    count += solve<kernel_mode::rounded_through_double>(wide_u, wide_dy, wide_phi, wide_s, wide_which, padded);
+    for (std::ptrdiff_t k = 0; k < gathered; ++k) {
+      s[index[k]] = static_cast<float>(wide_s[k]);  // (exact: a float)
+      which[index[k]] = wide_which[k];
+    }
+    gathered = 0;
+  }
+  // The lanes [first, first + n) through double, whole: a block in which many
+  // lanes lie beyond float's step (phi_often_beyond_common_window). (n: whole
+  // vectors of float)
+  void take_whole(std::ptrdiff_t first, std::ptrdiff_t n) {
+    const hn::ScalableTag<double> d;
+    const hn::Rebind<float, decltype(d)> df;
+    const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
+    alignas(64) double wide_u[block], wide_dy[block], wide_phi[block], wide_s[block];
+    for (std::ptrdiff_t k = 0; k < n; k += width) {
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, u + first + k)), d, wide_u + k);
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, dy + first + k)), d, wide_dy + k);
+      hn::Store(hn::PromoteTo(d, hn::LoadU(df, phi + first + k)), d, wide_phi + k);
+    }
+    count += solve<kernel_mode::rounded_through_double>(wide_u, wide_dy, wide_phi, wide_s, which + first, n);
+    for (std::ptrdiff_t k = 0; k < n; k += width) hn::StoreU(hn::DemoteTo(df, hn::Load(d, wide_s + k)), df, s + first + k);
+  }
+};
+
+// Whether a quarter or more of the n lanes from phi have phi outside float's
+// common window (where float's step does not take a lane): such a block goes
+// through double whole, where the first pass and the gathers of the lanes
+// left would cost more.
+template <class D>
+HWY_INLINE bool phi_often_beyond_common_window(D d, const float* phi, std::ptrdiff_t n) {
+  const hn::RebindToUnsigned<D> du;
+  const auto lowest = hn::Set(du, detail::common_window_lowest_phi<float>);
+  const auto width = hn::Set(du, detail::common_window_width<float>);
+  std::size_t beyond = 0;
+  for (std::ptrdiff_t k = 0; k < n; k += static_cast<std::ptrdiff_t>(hn::Lanes(d)))
+    beyond += hn::CountTrue(du, hn::Not(unsigned_less(du, hn::Sub(hn::BitCast(du, hn::LoadU(d, phi + k)), lowest), width)));
+  return 4 * static_cast<std::ptrdiff_t>(beyond) >= n;
+}
+
 // The packed lanes' s by `answer`, written to their places (their cases are
-// written by the first pass); those whose s is NaN or cannot move back, by
-// the scalar path. Returns how many those were. `clamp` (s, u, dy) is the
-// lanes' clamp onto the side of dy of their case.
+// written by the first pass); those whose s is NaN or cannot move back go to
+// `left`. `clamp` (s, u, dy) is the lanes' clamp onto the side of dy of their case.
 template <kernel_mode mode, class D, class Answer, class Clamp>
-HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, const hn::TFromD<D>* u_in,
-                                       const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in, hn::TFromD<D>* s_out,
-                                       int* which_out, Answer answer, Clamp clamp) {
+HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_lanes<mode, hn::TFromD<D>>& left,
+                             Answer answer, Clamp clamp) {
+  const auto *u_in = left.u, *dy_in = left.dy;
+  auto* s_out = left.s;
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   const hn::RebindToUnsigned<D> du;
@@ -656,7 +778,6 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
     lanes_in.offset[k] = 0;
     lanes_in.index[k] = 0;  // a lane of the arrays, for the gathers below
   }
-  std::ptrdiff_t left = 0;
   for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
     L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
     auto moved_back = hn::FirstN(d, width);
@@ -664,7 +785,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
       const L moved_s = s;
       const auto offset = hn::Load(du, lanes_in.offset + k);
       auto below_normal = hn::FirstN(d, 0);
-      s = move_back<mode == kernel_mode::rounded>(d, s, offset, moved_back, below_normal);
+      s = move_back<mode != kernel_mode::stable>(d, s, offset, moved_back, below_normal);
       if (!hn::AllFalse(d, below_normal)) [[unlikely]] {
         // an s that lands below the normal binades once moved back: rounded
         // once there, as solve_stable's move_back_below_normal rounds it
@@ -692,16 +813,11 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
       std::uint8_t moved_back_bits[16] = {};  // one bit per lane
       hn::StoreMaskBits(d, moved_back, moved_back_bits);
       for (std::ptrdiff_t j = 0; j < lanes_here; ++j)
-        if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) {
-          const auto i = static_cast<std::ptrdiff_t>(lanes_in.index[k + j]);
-          solve_lane<mode>(u_in[i], dy_in[i], phi_in[i], s_out[i], which_out[i]);
-          ++left;
-        }
+        if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) left.take(lanes_in.index[k + j]);
     }
   }
   lanes_in.count = 0;
   lanes_in.moved = false;
-  return left;
 }
 
 // The first pass over one vector at lane i: free flight answered (s = -u for
@@ -709,7 +825,7 @@ HWY_INLINE std::ptrdiff_t solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_i
 // inside the common window or moved by phi's band (solve_stable's moved stage),
 // have their case decided as solve_stable decides it and are packed by it;
 // the rest are noted for solve_stable.
-template <bool rounded_mode, class D>
+template <kernel_mode mode, class D>
 HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
                             hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted,
                             case_counts& counts) {
@@ -721,6 +837,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const hn::RebindToUnsigned<D> du;
   const hn::RebindToSigned<D> di;
   constexpr int significand_bits = layout::significand_bits;
+  constexpr bool rounded_mode = mode != kernel_mode::stable;
   const auto u = hn::LoadU(d, u_in + i), dy = hn::LoadU(d, dy_in + i), phi = hn::LoadU(d, phi_in + i);
   const auto magnitude = hn::Set(du, U(~layout::sign));
   const auto u_bits = hn::BitCast(du, u), dy_bits = hn::BitCast(du, dy), phi_bits = hn::BitCast(du, phi);
@@ -773,7 +890,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     const auto finite_uv = hn::AndNot(hn::RebindMask(di, inside), hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy))));
     auto shift = hn::Zero(di);     // the move of u and dy, in binades
     auto fits = hn::FirstN(di, 0);  // the lanes it takes
-    if constexpr (rounded_mode) {
+    if constexpr (mode == kernel_mode::rounded) {
       // The rounded mode's step is proven inside the common window only (phi's
       // band would move u and dy beyond it): where phi lies in the window's
       // range and u and dy are normal and less than its width apart, one exact
@@ -788,6 +905,9 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
       shift = hn::Sub(hn::Set(di, top), larger);
       fits = hn::AndNot(hn::Lt(hn::Add(smaller, shift), hn::Set(di, bottom)),
                         hn::And(hn::And(finite_uv, normal_uv), hn::RebindMask(di, phi_inside)));
+    } else if constexpr (mode == kernel_mode::rounded_through_double) {
+      // (no move: float's rounding would then be taken at the moved scale; the
+      // normal floats lie inside double's common window)
     } else {
       const auto band = hn::ShiftRight<fields::bands::band_bits>(
           hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
@@ -928,17 +1048,12 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   pack_some(sorted.scalar, sorted.scalar.count, !(answerable | free_flight | far), u, dy, phi);
 }
 
-// Every lane of a pack by the scalar path; returns how many.
+// Every lane of a pack to `left`.
 template <kernel_mode mode, class T>
-std::ptrdiff_t solve_each_lane(packed_lanes<T>& pack, const T* u, const T* dy, const T* phi, T* s, int* which) {
-  for (std::ptrdiff_t k = 0; k < pack.count; ++k) {
-    const auto lane = static_cast<std::ptrdiff_t>(pack.index[k]);
-    solve_lane<mode>(u[lane], dy[lane], phi[lane], s[lane], which[lane]);
-  }
-  const std::ptrdiff_t count = pack.count;
+void leave_each_lane(packed_lanes<T>& pack, left_lanes<mode, T>& left) {
+  for (std::ptrdiff_t k = 0; k < pack.count; ++k) left.take(pack.index[k]);
   pack.count = 0;
   pack.moved = false;
-  return count;
 }
 
 // Arrays too long for the cache stream from memory: the first pass asks for
@@ -954,7 +1069,8 @@ constexpr std::ptrdiff_t streamed_lanes = std::ptrdiff_t(1) << 15;
 // leaves the rest to solve_rounded.
 template <kernel_mode mode, class T>
 std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
-  std::ptrdiff_t i = 0, left = 0;
+  std::ptrdiff_t i = 0;
+  left_lanes<mode, T> left{u, dy, phi, s, which};
 #if HWY_NATIVE_FMA
   using D = hn::ScalableTag<T>;
   const D d;
@@ -964,6 +1080,13 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   const bool streamed = n >= streamed_lanes;
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
+    if constexpr (mode == kernel_mode::rounded && std::is_same_v<T, float>) {
+      if (phi_often_beyond_common_window(d, phi + i, end - i)) {
+        left.take_whole(i, end - i);
+        i = end;
+        continue;
+      }
+    }
     for (; i < end; i += width) {
       if (streamed && i + prefetch_distance < n) [[likely]] {
         hwy::Prefetch(u + i + prefetch_distance);
@@ -972,7 +1095,7 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
         __builtin_prefetch(s + i + prefetch_distance, 1);
         __builtin_prefetch(which + i + prefetch_distance, 1);
       }
-      sort_vector<mode != kernel_mode::stable>(d, u, dy, phi, s, which, i, sorted, counts);
+      sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, counts);
     }
     sorted.impacts.count = std::exchange(counts.impacts, 0);
     sorted.releases.count = std::exchange(counts.releases, 0);
@@ -984,11 +1107,17 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
     // the packs of the three cases, each by its case's answer in this mode
     auto solve_cases = [&](packed_lanes<T>& impacts, packed_lanes<T>& releases, packed_lanes<T>& contacts, auto impact,
                            auto release, auto contact) {
-      left += solve_packed<mode>(d, impacts, u, dy, phi, s, which, impact, impact_clamp);
-      left += solve_packed<mode>(d, releases, u, dy, phi, s, which, release, release_clamp);
-      left += solve_packed<mode>(d, contacts, u, dy, phi, s, which, contact, contact_clamp);
+      solve_packed(d, impacts, left, impact, impact_clamp);
+      solve_packed(d, releases, left, release, release_clamp);
+      solve_packed(d, contacts, left, contact, contact_clamp);
     };
-    if constexpr (mode == kernel_mode::rounded) {
+    if constexpr (mode == kernel_mode::rounded_through_double) {
+      // (float's stable formulas, as round_through_double takes them: unclamped)
+      solve_cases(sorted.impacts, sorted.releases, sorted.contacts,
+                  [](L u, L dy, L phi) { return through_double(stable_form::impact(u, -dy, phi)); },
+                  [](L u, L dy, L phi) { return through_double(stable_form::release(u, dy, phi)); },
+                  [](L u, L dy, L phi) { return through_double(stable_form::contact(u, dy, phi)); });
+    } else if constexpr (mode == kernel_mode::rounded) {
       // (the rounded mode's first pass packs no lane of a subnormal phi and no
       // far lane: phi lies in the common window's range, and the far lanes go
       // with the scalar pack)
@@ -1005,12 +1134,14 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
         solve_cases(sorted.far_impacts, sorted.far_releases, sorted.far_contacts, [](auto... x) { return far_impacts<D>(x...); },
                     [](auto... x) { return far_releases<D>(x...); }, [](auto... x) { return far_contacts<D>(x...); });
     }
-    left += solve_each_lane<mode>(sorted.scalar, u, dy, phi, s, which);
+    leave_each_lane(sorted.scalar, left);
+    left.finish();
   }
 #endif
   // the last lanes (and every lane where the vectors' multiply-add would round twice)
-  for (; i < n; ++i, ++left) solve_lane<mode>(u[i], dy[i], phi[i], s[i], which[i]);
-  return left;
+  for (; i < n; ++i) left.take(i);
+  left.finish();
+  return left.count;
 }
 
 }  // namespace

@@ -87,10 +87,11 @@ void solve_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::p
 
 // The same for solve_rounded: every lane gets exactly solve_rounded's s and
 // case. In float and double the kernels take the lanes inside the common
-// window by the fixed-bound step and its rounding test (rounded.hpp) in
-// vectors. The lanes whose test fails, and every other lane, take
-// solve_rounded. The other types run solve_rounded lane by
-// lane. The types of
+// window, or moved into it, by the fixed-bound step and its rounding test
+// (rounded.hpp) in vectors; float's kernel takes the lanes its step leaves
+// through double on double vectors, as solve_rounded<float> itself does. The
+// lanes whose test fails, and every other lane, take solve_rounded. The other
+// types run solve_rounded lane by lane. The types of
 // contact::rounded_available only.
 template <class T>
 void solve_rounded_batch(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {

@@ -46,7 +46,8 @@ inline constexpr bool rounded_available = std::numeric_limits<T>::is_iec559 && s
 //    are proven by Gappa from the stable path's proven bound
 //    (fixed_bound_exponents). float's scalar path runs the stable formulas
 //    in double instead (round_through_double); the float batch kernel takes
-//    the step on float lanes inside float's common window.
+//    the step on float lanes inside float's common window, and the lanes it
+//    leaves through double on double lanes.
 // 2. A rounding test: if no rounding boundary (the midpoint between two
 //    neighbouring T values) lies within the bound of s0 + delta, the root
 //    rounds as s0 + delta does.
@@ -495,6 +496,13 @@ template <class T>
 // so does the root. Both ends have the sign of s, which is the root's (the bound
 // is relative), so a zero has the right sign; a zero s is an exact (A.31) root, +0.
 
+// the bound on double's s (or on double lanes: the batch kernel's through_double)
+template <class Num>
+[[gnu::always_inline]] inline Num through_double_bound(const Num& s) {
+  using std::fabs;
+  return fabs(s) * Num(0x1p-49);
+}
+
 [[gnu::always_inline]] inline bool round_through_double(const float& u, const float& dy, const float& phi,
                                                         solution<float>& out) {
   const double wide_u = u, wide_dy = dy, wide_phi = phi;
@@ -513,7 +521,7 @@ template <class T>
     out.which = contact_case::release;  // (A.32)
     s = stable_form::release(wide_u, wide_dy, wide_phi);
   }
-  const double bound = std::fabs(s) * 0x1p-49;
+  const double bound = through_double_bound(s);
   const float below = static_cast<float>(s - bound), above = static_cast<float>(s + bound);
   out.s = above;  // the exact decision's candidate if the test below fails
   return below == above;
