@@ -1144,24 +1144,35 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   return left.count;
 }
 
+// The packs hold lane indices of T's width (32 bits in float): longer arrays
+// go in pieces of 2^30 lanes.
+template <kernel_mode mode, class T>
+std::ptrdiff_t solve_in_pieces(const T* u, const T* dy, const T* phi, T* s, int* which, std::ptrdiff_t n) {
+  constexpr std::ptrdiff_t piece = std::ptrdiff_t(1) << 30;
+  std::ptrdiff_t left = 0;
+  for (std::ptrdiff_t first = 0; first < n; first += piece)
+    left += solve<mode>(u + first, dy + first, phi + first, s + first, which + first, std::min(piece, n - first));
+  return left;
+}
+
 }  // namespace
 
 std::ptrdiff_t solve_double(const double* u, const double* dy, const double* phi, double* s, int* which, std::ptrdiff_t n) {
-  return solve<kernel_mode::stable>(u, dy, phi, s, which, n);
+  return solve_in_pieces<kernel_mode::stable>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_float(const float* u, const float* dy, const float* phi, float* s, int* which, std::ptrdiff_t n) {
-  return solve<kernel_mode::stable>(u, dy, phi, s, which, n);
+  return solve_in_pieces<kernel_mode::stable>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_rounded_double(const double* u, const double* dy, const double* phi, double* s, int* which,
                                     std::ptrdiff_t n) {
-  return solve<kernel_mode::rounded>(u, dy, phi, s, which, n);
+  return solve_in_pieces<kernel_mode::rounded>(u, dy, phi, s, which, n);
 }
 
 std::ptrdiff_t solve_rounded_float(const float* u, const float* dy, const float* phi, float* s, int* which,
                                    std::ptrdiff_t n) {
-  return solve<kernel_mode::rounded>(u, dy, phi, s, which, n);
+  return solve_in_pieces<kernel_mode::rounded>(u, dy, phi, s, which, n);
 }
 
 }  // namespace contact::batch_kernels::CONTACT_BATCH_KERNEL_NAME
