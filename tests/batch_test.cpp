@@ -401,7 +401,7 @@ lanes<T> lanes_of_every_kind(std::size_t count, std::uint64_t seed) {
   using bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
   using limits = std::numeric_limits<T>;
   harness::seeded_source source(seed);
-  auto random_bits = [&] { return std::bit_cast<T>(bits(source.integer(0, std::numeric_limits<long>::max()) * 2654435761u)); };
+  auto random_bits = [&] { return std::bit_cast<T>(bits(std::uint64_t(source.integer(0, std::numeric_limits<long>::max())) * 2654435761u)); };
   const T specials[] = {T(0), T(-0.0), limits::denorm_min(), limits::min(), (limits::max)(), limits::infinity(),
                         limits::quiet_NaN(), T(1), T(-1), contact::detail::phi_bands<T>::end, limits::epsilon()};
   using harness::distribution;
