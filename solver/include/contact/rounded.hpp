@@ -568,11 +568,12 @@ struct cased_step {
   contact_case which;
 };
 
-// The step of a case decided before (not free flight). A call, for the moves
-// beyond the window; fixed_bound_step, on the common path, inlines the steps
-// by case instead (a step returned from a call travels through memory).
+// The step of a case decided before (not free flight), for the moves beyond
+// the window. Inlined, as fixed_bound_step's steps are on the common path: a
+// step returned from a call travels through memory, and its reload stalls.
 template <class T>
-rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy, const T& phi) {
+[[gnu::always_inline]] inline rounded_form::fixed_step<T> step_of_case(contact_case which, const T& u, const T& dy,
+                                                                       const T& phi) {
   if (which == contact_case::impact) return rounded_form::impact_step(u, dy, phi);
   if (which == contact_case::contact) return rounded_form::contact_step(u, dy, phi);
   return rounded_form::release_step(u, dy, phi);
