@@ -3,8 +3,9 @@
 // against MPFR's, rounded once in the same format (its precision, exponent
 // range and subnormals): on random operands of every alignment of the product
 // and the addend, and on hard ones (cancellation, results among the
-// subnormals, overflow, exact zeros and ties); and binary128's TwoSum in
-// integers against Knuth's and MPFR's.
+// subnormals, overflow, exact zeros and ties); binary128's TwoSum in
+// integers against Knuth's and MPFR's; and its exact product in integers
+// against its product and MPFR's fma.
 #include <mpfr.h>
 
 // MPFR's binary128 conversions, declared with the __float128 that GCC and clang
@@ -341,6 +342,67 @@ TEST(EmulatedTwoSum, Float128IsKnuthsOnHardOperands) {
                                  return std::pair{float128(o.a * o.b), o.c};
                                }),
             0);
+}
+
+
+// binary128's exact product in integers (detail::two_prod_in_integers, which
+// two_prod and product_error call for it): the pair a * b and MPFR's fma(a, b,
+// -(a * b)), bit for bit, through two_prod and product_error alike; where the
+// integers decline (zero, subnormal, infinite or NaN operands, a part outside
+// the normal binades), the library's product and the fma answer.
+template <class Draw>
+long two_prod_mismatches(long count, Draw draw) {
+  long wrong = 0;
+  for (long i = 0; i < count; ++i) {
+    const auto [a, b] = draw(i);
+    const float128 product = a * b, error = mpfr_fma_in(a, b, float128(-product));
+    const auto pair = detail::two_prod(a, b);
+    using std::isnan;
+    auto same = [](const float128& x, const float128& y) {
+      return (isnan(x) && isnan(y)) || format<float128>::bits(x) == format<float128>::bits(y);
+    };
+    const bool right =
+        same(pair.high, product) && same(pair.low, error) && same(detail::product_error(a, b, product), error);
+    if (!right && ++wrong <= 5)
+      ADD_FAILURE() << "two_prod(" << text(a) << ", " << text(b) << ") = " << text(pair.high) << " + "
+                    << text(pair.low) << ", expected " << text(product) << " + " << text(error);
+  }
+  return wrong;
+}
+
+// factors of every binade the window holds, full and half width (exact products)
+TEST(EmulatedTwoProd, Float128IsTheProductAndItsFmaOnRandomOperands) {
+  draws<float128> d(7);
+  EXPECT_EQ(two_prod_mismatches(1000000,
+                                [&](long i) {
+                                  const int width = i % 10 == 0 ? format<float128>::digits / 2 : format<float128>::digits;
+                                  return std::pair{d.normal(d.in(-4000, 4000), width), d.normal(d.in(-4000, 4000), width)};
+                                }),
+            0);
+}
+
+// the fma's hard kinds' factors: products among and below the subnormals,
+// near overflow, ties and short significands, the whole range
+TEST(EmulatedTwoProd, Float128IsTheProductAndItsFmaOnHardOperands) {
+  draws<float128> d(8);
+  EXPECT_EQ(two_prod_mismatches(100000,
+                                [&](long i) {
+                                  const operands<float128> o = d.hard_operands(int(i));
+                                  return std::pair{o.a, o.b};
+                                }),
+            0);
+}
+
+// zeros of both signs, the least normal and a subnormal, the largest, infinities and NaN
+TEST(EmulatedTwoProd, Float128IsTheProductAndItsFmaOnSpecialOperands) {
+  const float128 zero = 0, inf = std::numeric_limits<float128>::infinity(), least = (std::numeric_limits<float128>::min)();
+  const float128 special[] = {zero, float128(-zero), float128(3), least, float128(least / 4), float128(1 + least),
+                              (std::numeric_limits<float128>::max)(), inf, float128(-inf),
+                              std::numeric_limits<float128>::quiet_NaN()};
+  std::vector<std::pair<float128, float128>> pairs;
+  for (const auto& a : special)
+    for (const auto& b : special) pairs.emplace_back(a, b);
+  EXPECT_EQ(two_prod_mismatches(long(pairs.size()), [&](long i) { return pairs[std::size_t(i)]; }), 0);
 }
 
 }  // namespace

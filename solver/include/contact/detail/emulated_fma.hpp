@@ -250,6 +250,43 @@ exact_pair<T> two_sum_in_integers(const T& a, const T& b) {
   return {format::pack(negative, binade, significand), format::pack(negative != up, y.exponent + low_top, low_significand)};
 }
 
+// a * b = high + low exactly, from one integer product of the significands,
+// where the library's multiplication and fma_in_integers would each form it
+// (binary128's two_prod and product_error). The same pair as a * b and
+// fma(a, b, -(a * b)): high is the product rounded to nearest, ties to even,
+// and low = ab - high has at most p significant bits, so it is exact wherever
+// it is normal. False, and `out` untouched, where an operand is zero,
+// subnormal, infinite or NaN, or high or a non-zero low leaves the normal
+// binades: the caller then takes the library's product and the fma.
+template <class T>
+bool two_prod_in_integers(const T& a, const T& b, exact_pair<T>& out) {
+  using format = emulated_format<T>;
+  constexpr int p = format::digits;
+  constexpr int least_binade = 1 - wide_bias, largest_binade = wide_bias;
+  unpacked_binary x, y;
+  if (!(format::unpack(a, x) & format::unpack(b, y))) [[unlikely]] return false;
+  const uint256 product = multiply(x.significand, y.significand, p <= 64);
+  const bool negative = x.negative != y.negative;
+  const int last = x.exponent + y.exponent;  // the exponent of the product's bit 0
+  const int top = top_bit(product);          // 2p - 2 or 2p - 1
+  const int drop = top + 1 - p;              // p - 1 or p bits below high's last one
+  uint128 significand = (product.low >> drop) | (product.high << (128 - drop));
+  const uint128 rest = product.low & ((uint128(1) << drop) - 1), half = uint128(1) << (drop - 1);
+  const bool up = (rest > half) | ((rest == half) & ((significand & 1) != 0));
+  significand += uint128(up);
+  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
+  significand >>= carry;
+  const int binade = last + top + int(carry);
+  const uint128 low = up ? (uint128(1) << drop) - rest : rest;  // |ab - high|, below 2^drop
+  const int low_top = top_bit(low);                              // (-1 for an exact product)
+  if ((binade > largest_binade) | (binade < least_binade) | ((low != 0) & (last + low_top < least_binade))) [[unlikely]]
+    return false;
+  out.high = format::pack(negative, binade, significand);
+  // an exact product's error is +0, as the fma's exact zero sum is
+  out.low = low == 0 ? T(0) : format::pack(negative != up, last + low_top, low << ((p - 1) - low_top));
+  return true;
+}
+
 // a * b + c rounded once in integer arithmetic, for the types of
 // emulated_format (emulated_fma, below, calls it).
 //
