@@ -200,6 +200,38 @@ inline int top_bit(const uint256& x) {
   return ((128 + high) & high_set) | (low & ~high_set);
 }
 
+// An exact integer v, its leading bit at `top` (p <= top <= p + 126), as
+// high + rest: high is v rounded to p bits, to nearest, ties to even, and
+// rest = |v - high| exactly, both in units of v's bit 0. What TwoSum and
+// TwoProd in integers (below) make of an exact sum or product.
+struct rounded_parts {
+  uint128 significand;  // high's p bits, the leading one at bit p - 1
+  int top;              // high's leading bit: v's, one higher where rounding up carried
+  uint128 rest;         // |v - high|, below 2^(top + 1 - p)
+  int rest_top;         // rest's leading bit (-1 for an exact v)
+  bool up;              // high lies beyond v: the rest's sign is the opposite of v's
+};
+
+template <int p>
+rounded_parts rounded_to_nearest(const uint256& v, int top) {
+  const int drop = top + 1 - p;  // bits below high's last one
+  uint128 significand = (v.low >> drop) | (v.high << (128 - drop));
+  const uint128 below = v.low & ((uint128(1) << drop) - 1), half = uint128(1) << (drop - 1);
+  const bool up = (below > half) | ((below == half) & ((significand & 1) != 0));
+  significand += uint128(up);
+  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
+  significand >>= carry;
+  const uint128 rest = up ? (uint128(1) << drop) - below : below;
+  return {significand, top + int(carry), rest, top_bit(rest), up};
+}
+
+// The rest's significand with its leading one at bit p - 1 (the rest of an
+// exact sum or product is a p-bit number: any bits shifted out are zeros).
+template <int p>
+uint128 rest_significand(const rounded_parts& parts) {
+  return parts.rest_top >= p - 1 ? parts.rest >> (parts.rest_top - (p - 1)) : parts.rest << ((p - 1) - parts.rest_top);
+}
+
 // TwoSum's pair, a + b rounded to nearest (ties to even) and the exact rest,
 // in integer arithmetic, for binary128 (two_sum calls it). With both operands
 // normal and x the one whose last bit lies higher, by d bits: for d <= 120
@@ -234,20 +266,13 @@ exact_pair<T> two_sum_in_integers(const T& a, const T& b) {
     if (y.exponent + top < 1 - wide_bias) [[unlikely]] return knuth_two_sum(a, b);
     return {format::pack(negative, y.exponent + top, sum.low << -drop), T(0)};
   }
-  uint128 significand = (sum.low >> drop) | (sum.high << (128 - drop));
-  const uint128 rest = sum.low & ((uint128(1) << drop) - 1), half = uint128(1) << (drop - 1);
-  const bool up = (rest > half) | ((rest == half) & ((significand & 1) != 0));
-  significand += uint128(up);
-  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
-  significand >>= carry;
-  const int binade = y.exponent + top + int(carry);
-  const uint128 low = up ? (uint128(1) << drop) - rest : rest;
-  const int low_top = top_bit(low);  // (-1 for an exact sum)
-  if ((binade > wide_bias) | ((low != 0) & (y.exponent + low_top < 1 - wide_bias))) [[unlikely]]
+  const rounded_parts high = rounded_to_nearest<p>(sum, top);
+  const int binade = y.exponent + high.top;
+  if ((binade > wide_bias) | ((high.rest != 0) & (y.exponent + high.rest_top < 1 - wide_bias))) [[unlikely]]
     return knuth_two_sum(a, b);
-  if (low == 0) return {format::pack(negative, binade, significand), T(0)};
-  const uint128 low_significand = low_top >= p - 1 ? low >> (low_top - (p - 1)) : low << ((p - 1) - low_top);
-  return {format::pack(negative, binade, significand), format::pack(negative != up, y.exponent + low_top, low_significand)};
+  const T rounded = format::pack(negative, binade, high.significand);
+  if (high.rest == 0) return {rounded, T(0)};
+  return {rounded, format::pack(negative != high.up, y.exponent + high.rest_top, rest_significand<p>(high))};
 }
 
 // a * b = high + low exactly, from one integer product of the significands,
@@ -268,22 +293,14 @@ bool two_prod_in_integers(const T& a, const T& b, exact_pair<T>& out) {
   const uint256 product = multiply(x.significand, y.significand, p <= 64);
   const bool negative = x.negative != y.negative;
   const int last = x.exponent + y.exponent;  // the exponent of the product's bit 0
-  const int top = top_bit(product);          // 2p - 2 or 2p - 1
-  const int drop = top + 1 - p;              // p - 1 or p bits below high's last one
-  uint128 significand = (product.low >> drop) | (product.high << (128 - drop));
-  const uint128 rest = product.low & ((uint128(1) << drop) - 1), half = uint128(1) << (drop - 1);
-  const bool up = (rest > half) | ((rest == half) & ((significand & 1) != 0));
-  significand += uint128(up);
-  const uint128 carry = significand >> p;  // 2^p: the next binade's leading one
-  significand >>= carry;
-  const int binade = last + top + int(carry);
-  const uint128 low = up ? (uint128(1) << drop) - rest : rest;  // |ab - high|, below 2^drop
-  const int low_top = top_bit(low);                              // (-1 for an exact product)
-  if ((binade > largest_binade) | (binade < least_binade) | ((low != 0) & (last + low_top < least_binade))) [[unlikely]]
+  const rounded_parts high = rounded_to_nearest<p>(product, top_bit(product));  // (its top: 2p - 2 or 2p - 1)
+  const int binade = last + high.top;
+  if ((binade > largest_binade) | (binade < least_binade) |
+      ((high.rest != 0) & (last + high.rest_top < least_binade))) [[unlikely]]
     return false;
-  out.high = format::pack(negative, binade, significand);
+  out.high = format::pack(negative, binade, high.significand);
   // an exact product's error is +0, as the fma's exact zero sum is
-  out.low = low == 0 ? T(0) : format::pack(negative != up, last + low_top, low << ((p - 1) - low_top));
+  out.low = high.rest == 0 ? T(0) : format::pack(negative != high.up, last + high.rest_top, rest_significand<p>(high));
   return true;
 }
 
