@@ -346,7 +346,7 @@ TEST(EmulatedTwoSum, Float128IsKnuthsOnHardOperands) {
 
 
 // binary128's exact product in integers (detail::two_prod_in_integers, which
-// two_prod and product_error call for it): the pair a * b and MPFR's fma(a, b,
+// two_prod calls for it): the pair a * b and MPFR's fma(a, b,
 // -(a * b)), bit for bit, through two_prod and product_error alike; where the
 // integers decline (zero, subnormal, infinite or NaN operands, a part outside
 // the normal binades), the library's product and the fma answer.

@@ -105,8 +105,7 @@ template <bool phi_is_subnormal = false, class Num>
   using detail::square_root;
   using detail::two_sum;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
-  const Num push = factors.phi * factors.x;  // phi |dy|
-  const Num push_error = detail::product_error(factors.phi, factors.x, push);
+  const auto [push, push_error] = detail::two_prod(factors.phi, factors.x);  // phi |dy|
   const Num root = square_root(discriminant(u, Num(push * (u - gap))));
   const auto one_plus_phi = two_sum(Num(1), phi);
   const Num inverse = Num(1) / impact_denominator(one_plus_phi);
@@ -159,8 +158,8 @@ struct stiffness_pair {
 template <class Num>
 [[gnu::always_inline]] inline stiffness_pair<Num> stiffness_of(const Num& phi_dy, const Num& phi_dy_error, const Num& dy) {
   using detail::fused_multiply_add;
-  const Num high = phi_dy * dy;
-  return {high, fused_multiply_add(phi_dy_error, dy, detail::product_error(phi_dy, dy, high))};
+  const auto product = detail::two_prod(phi_dy, dy);
+  return {product.high, fused_multiply_add(phi_dy_error, dy, product.low)};
 }
 
 // The release's parts are selected by the sign of u, not branched on: it is a
@@ -217,16 +216,16 @@ template <bool phi_is_subnormal = false, class Num>
 [[gnu::always_inline]] inline release_root<Num> release_with_square_root(const Num& u, const Num& dy, const Num& phi) {
   using detail::square_root;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors
-  const Num phi_dy = factors.phi * factors.x;
   if constexpr (!detail::binary_bits<Num>) {
     // The wide types (and scaled<T>) branch: their fma is a library call or an
     // emulation, of which u <= 0 needs none of the compensation's.
     if (!(u > Num(0))) {
-      const Num root = square_root(discriminant(u, Num(phi_dy * dy)));
+      const Num root = square_root(discriminant(u, Num(Num(factors.phi * factors.x) * dy)));
       return {plain_release(u, root, Num(Num(1) / Num(2))), root};
     }
   }
-  const auto stiffness = stiffness_of(phi_dy, detail::product_error(factors.phi, factors.x, phi_dy), dy);
+  const auto phi_dy = detail::two_prod(factors.phi, factors.x);
+  const auto stiffness = stiffness_of(phi_dy.high, phi_dy.low, dy);
   const Num root = square_root(discriminant(u, release_term(u, stiffness)));
   const auto u_plus_root = detail::two_sum(u, root);
   const Num inverse = Num(1) / release_denominator(u, u_plus_root);

@@ -277,7 +277,7 @@ exact_pair<T> two_sum_in_integers(const T& a, const T& b) {
 
 // a * b = high + low exactly, from one integer product of the significands,
 // where the library's multiplication and fma_in_integers would each form it
-// (binary128's two_prod and product_error). The same pair as a * b and
+// (binary128's two_prod). The same pair as a * b and
 // fma(a, b, -(a * b)): high is the product rounded to nearest, ties to even,
 // and low = ab - high has at most p significant bits, so it is exact wherever
 // it is normal. False, and `out` untouched, where an operand is zero,

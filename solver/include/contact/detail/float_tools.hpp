@@ -89,17 +89,13 @@ inline constexpr bool product_error_by_dekker = !has_fused_fma<T>::value ||
 // a * b - product exactly, for product = a * b rounded, barring overflow (of
 // the split, within 2^-(p/2) of T's largest value, in Dekker's case) and
 // underflow of the error: T's own fused fma, or Veltkamp's split and Dekker's
-// product, exact for any radix-2 T; for binary128, one product of the
-// significands in integers, where both parts are normal.
+// product, exact for any radix-2 T. (A caller that needs the product too takes
+// two_prod, which forms binary128's pair from one product in integers.)
 template <class T>
 T fused_multiply_add(const T& a, const T& b, const T& c);
 
 template <class T>
 T product_error(const T& a, const T& b, const T& product) {
-  if constexpr (binary128_class<T>) {  // (product is a * b rounded: the pair's high part)
-    exact_pair<T> parts;
-    if (two_prod_in_integers(a, b, parts)) [[likely]] return parts.low;
-  }
   if constexpr (!product_error_by_dekker<T>) {
     return fused_multiply_add(a, b, T(-product));  // the lanes' and scaled<T>'s own too
   } else {
