@@ -1,5 +1,9 @@
 // The properties the stable algorithm claims, for every scalar type, each
 // checked by RapidCheck (with shrinking) on the generators of harness.hpp.
+#include <array>
+#include <thread>
+#include <vector>
+
 #include "harness.hpp"
 
 namespace contact::testing {
@@ -197,6 +201,35 @@ TYPED_TEST(StableProperty, AgreesWithMpfrWithinBound) {
     RC_ASSERT(wide.which == computed.which);
     RC_ASSERT(apart <= stable_bound_for(computed.which, x.u) + 0.01);
   });
+}
+
+// MPFR's answer depends on the default precision it is solved at, not on the
+// precisions solved at before: Boost gives a result the largest precision of
+// its operands, so the stable path's constants must follow the default.
+TEST(StableMpfr, AnswersAtThePrecisionItIsSolvedAtWhateverCameBefore) {
+  const int saved = mpfr_float::default_precision();
+  const auto solve_each_case_at = [](int digits10) {
+    mpfr_float::default_precision(digits10);
+    std::vector<solution<mpfr_float>> answers;
+    for (const auto& [u, dy, phi] : {std::array<const char*, 3>{"1e-3", "-0.5e-3", "10"},  // impact
+                                     {"1e-3", "2e-3", "0.1"},                              // contact
+                                     {"1e-3", "2e-3", "10"},                               // release, u > 0
+                                     {"-1e-3", "2e-3", "10"}})                             // release, u <= 0
+      answers.push_back(solve_stable(mpfr_float(u), mpfr_float(dy), mpfr_float(phi)));
+    return answers;
+  };
+  solve_each_case_at(80);
+  const auto after_wider = solve_each_case_at(30);
+  std::vector<solution<mpfr_float>> in_a_fresh_thread;
+  std::thread([&] { in_a_fresh_thread = solve_each_case_at(30); }).join();
+  mpfr_float::default_precision(saved);
+  ASSERT_EQ(after_wider.size(), in_a_fresh_thread.size());
+  for (std::size_t i = 0; i < after_wider.size(); ++i) {
+    EXPECT_EQ(after_wider[i].s.precision(), 30u) << "case " << i;
+    EXPECT_EQ(after_wider[i].s.str(0, std::ios_base::scientific), in_a_fresh_thread[i].s.str(0, std::ios_base::scientific))
+        << "case " << i;
+    EXPECT_EQ(after_wider[i].which, in_a_fresh_thread[i].which) << "case " << i;
+  }
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ struct fraction {
 template <class Num>
 [[gnu::always_inline]] inline Num discriminant(const Num& u, const Num& term) {
   using detail::fused_multiply_add;
-  return fused_multiply_add(u, u, Num(4) * term);
+  return fused_multiply_add(u, u, detail::constant<Num, 4>() * term);
 }
 
 // (A.30), from the quadratic (A.9) (1+phi) s^2 + (u - 2 phi dy) s + phi dy^2 = 0,
@@ -70,7 +70,7 @@ struct impact_root {
 // D = 2 (1 + phi), from 1 + phi as an exact pair
 template <class Num>
 [[gnu::always_inline]] inline Num impact_denominator(const detail::exact_pair<Num>& one_plus_phi) {
-  return Num(2) * one_plus_phi.high;
+  return detail::constant<Num, 2>() * one_plus_phi.high;
 }
 
 // -N / D from N's parts and inverse = 1 / D: push = phi gap with its rounding
@@ -78,22 +78,27 @@ template <class Num>
 // gap's (detail::factors_of): with a subnormal phi the products with phi are
 // formed from normal factors of the same exact products, (phi 2^64) (x 2^-64),
 // as a subnormal operand costs a microcode assist; the values are the same.
-template <bool phi_is_subnormal, class Num>
+template <bool phi_is_subnormal, class Num, class Factors>
 [[gnu::always_inline]] inline Num impact_quotient(const Num& u, const Num& push, const Num& push_error, const Num& root,
                                                   const detail::exact_pair<Num>& one_plus_phi, const Num& inverse,
-                                                  const detail::normal_factors<Num>& factors) {
+                                                  const Factors& factors) {
   using detail::fused_multiply_add;
   using detail::two_sum;
-  const auto head = two_sum(u, Num(2) * push);
+  const auto& two = detail::constant<Num, 2>();
+  const auto head = two_sum(u, Num(two * push));
   const auto numerator = two_sum(head.high, root);
-  const Num numerator_low = numerator.low + (head.low + Num(2) * push_error);
+  const Num numerator_low = numerator.low + (head.low + two * push_error);
   const Num denominator = impact_denominator(one_plus_phi);
   const Num quotient = numerator.high * inverse;
   const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
-  // 2 phi q: (2 phi 2^64) (q 2^-64) where phi is subnormal (1 + phi's low part is phi itself)
-  const Num twice_low = phi_is_subnormal ? Num(Num(2) * factors.phi) : Num(one_plus_phi.low + one_plus_phi.low);
-  const Num low_quotient = phi_is_subnormal ? Num(quotient * factors.down) : quotient;
-  const Num correction = fused_multiply_add(-low_quotient, twice_low, Num(residual + numerator_low));
+  const Num correction = [&] {
+    // 2 phi q: (2 phi 2^64) (q 2^-64) where phi is subnormal (1 + phi's low part is phi itself)
+    if constexpr (phi_is_subnormal) {
+      return fused_multiply_add(-Num(quotient * factors.down), Num(two * factors.phi), Num(residual + numerator_low));
+    } else {
+      return fused_multiply_add(-quotient, Num(one_plus_phi.low + one_plus_phi.low), Num(residual + numerator_low));
+    }
+  }();
   return -fused_multiply_add(correction, inverse, quotient);
 }
 
@@ -107,8 +112,9 @@ template <bool phi_is_subnormal = false, class Num>
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
   const auto [push, push_error] = detail::two_prod(factors.phi, factors.x);  // phi |dy|
   const Num root = square_root(discriminant(u, Num(push * (u - gap))));
-  const auto one_plus_phi = two_sum(Num(1), phi);
-  const Num inverse = Num(1) / impact_denominator(one_plus_phi);
+  const auto& one = detail::constant<Num, 1>();
+  const auto one_plus_phi = two_sum(one, phi);
+  const Num inverse = one / impact_denominator(one_plus_phi);
   return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, inverse, factors), root};
 }
 
@@ -125,7 +131,7 @@ template <class Num>
 [[gnu::always_inline]] inline fraction<Num> contact_fraction(const Num& u, const Num& phi, const Num& phi_factor,
                                                              const Num& dy_factor) {
   using detail::fused_multiply_add;
-  return {fused_multiply_add(phi_factor, Num(2) * dy_factor, -u), Num(1) + phi};
+  return {fused_multiply_add(phi_factor, Num(detail::constant<Num, 2>() * dy_factor), -u), detail::constant<Num, 1>() + phi};
 }
 
 template <bool phi_is_subnormal = false, class Num>
@@ -163,21 +169,24 @@ template <class Num>
 }
 
 // The release's parts are selected by the sign of u, not branched on: it is a
-// coin toss on physical inputs. (The wide types branch, in release_with_square_root.)
+// coin toss on physical inputs. The wide types branch (release_with_square_root),
+// and take the parts for u > 0 alone where u_is_positive, a compile-time fact.
 
 // The discriminant's term: the pair's sum for u > 0, where the compensation
 // needs it; the high part for u <= 0, as proven.
-template <class Num>
+template <bool u_is_positive, class Num>
 [[gnu::always_inline]] inline Num release_term(const Num& u, const stiffness_pair<Num>& stiffness) {
   using detail::select;
-  return select(u > Num(0), Num(stiffness.high + stiffness.low), stiffness.high);
+  if constexpr (u_is_positive) return stiffness.high + stiffness.low;
+  else return select(u > Num(0), Num(stiffness.high + stiffness.low), stiffness.high);
 }
 
 // The division's operand: u + root (u_plus_root's high part) for u > 0, 2 for u <= 0.
-template <class Num>
-[[gnu::always_inline]] inline Num release_denominator(const Num& u, const detail::exact_pair<Num>& u_plus_root) {
+template <bool u_is_positive, class Num>
+[[gnu::always_inline]] inline decltype(auto) release_denominator(const Num& u, const detail::exact_pair<Num>& u_plus_root) {
   using detail::select;
-  return select(u > Num(0), u_plus_root.high, Num(2));
+  if constexpr (u_is_positive) return (u_plus_root.high);
+  else return select(u > Num(0), u_plus_root.high, Num(2));
 }
 
 // u > 0: 2 st / (u + root) from q = 2 st inverse, corrected by the residual
@@ -186,10 +195,11 @@ template <class Num>
 [[gnu::always_inline]] inline Num rationalised_quotient(const stiffness_pair<Num>& stiffness,
                                                         const detail::exact_pair<Num>& u_plus_root, const Num& inverse) {
   using detail::fused_multiply_add;
-  const Num twice = Num(2) * stiffness.high;
+  const auto& two = detail::constant<Num, 2>();
+  const Num twice = two * stiffness.high;
   const Num quotient = twice * inverse;
   const Num residual = fused_multiply_add(-quotient, u_plus_root.high, twice);
-  const Num correction = fused_multiply_add(-quotient, u_plus_root.low, Num(residual + Num(2) * stiffness.low));
+  const Num correction = fused_multiply_add(-quotient, u_plus_root.low, Num(residual + two * stiffness.low));
   return fused_multiply_add(correction, inverse, quotient);
 }
 
@@ -200,11 +210,12 @@ template <class Num>
 }
 
 // s from its parts, with inverse = 1 / release_denominator(u, u_plus_root).
-template <class Num>
+template <bool u_is_positive, class Num>
 [[gnu::always_inline]] inline Num release_quotient(const Num& u, const stiffness_pair<Num>& stiffness, const Num& root,
                                                    const detail::exact_pair<Num>& u_plus_root, const Num& inverse) {
   using detail::select;
-  return select(u > Num(0), rationalised_quotient(stiffness, u_plus_root, inverse), plain_release(u, root, inverse));
+  if constexpr (u_is_positive) return rationalised_quotient(stiffness, u_plus_root, inverse);
+  else return select(u > Num(0), rationalised_quotient(stiffness, u_plus_root, inverse), plain_release(u, root, inverse));
 }
 
 template <class Num>
@@ -216,20 +227,21 @@ template <bool phi_is_subnormal = false, class Num>
 [[gnu::always_inline]] inline release_root<Num> release_with_square_root(const Num& u, const Num& dy, const Num& phi) {
   using detail::square_root;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors
-  if constexpr (!detail::binary_bits<Num>) {
-    // The wide types (and scaled<T>) branch: their fma is a library call or an
-    // emulation, of which u <= 0 needs none of the compensation's.
-    if (!(u > Num(0))) {
+  // The wide types (and scaled<T>) branch: their fma is a library call or an
+  // emulation, of which u <= 0 needs none of the compensation's.
+  constexpr bool branched = !detail::binary_bits<Num>;
+  if constexpr (branched) {
+    if (!(u > detail::constant<Num, 0>())) {
       const Num root = square_root(discriminant(u, Num(Num(factors.phi * factors.x) * dy)));
-      return {plain_release(u, root, Num(Num(1) / Num(2))), root};
+      return {plain_release(u, root, detail::constant<Num, 1, 2>()), root};
     }
   }
   const auto phi_dy = detail::two_prod(factors.phi, factors.x);
   const auto stiffness = stiffness_of(phi_dy.high, phi_dy.low, dy);
-  const Num root = square_root(discriminant(u, release_term(u, stiffness)));
+  const Num root = square_root(discriminant(u, release_term<branched>(u, stiffness)));
   const auto u_plus_root = detail::two_sum(u, root);
-  const Num inverse = Num(1) / release_denominator(u, u_plus_root);
-  return {release_quotient(u, stiffness, root, u_plus_root, inverse), root};
+  const Num inverse = detail::constant<Num, 1>() / release_denominator<branched>(u, u_plus_root);
+  return {release_quotient<branched>(u, stiffness, root, u_plus_root, inverse), root};
 }
 
 template <bool phi_is_subnormal = false, class Num>

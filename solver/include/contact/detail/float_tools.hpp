@@ -17,6 +17,7 @@
 
 #include <boost/math/special_functions/next.hpp>
 #include <boost/math/tools/precision.hpp>
+#include <boost/multiprecision/traits/is_variable_precision.hpp>
 
 #include "emulated_fma.hpp"
 #include "error_free.hpp"
@@ -57,6 +58,41 @@ using scalar_of_t = typename scalar_of<T>::type;
 // path steps (clamps) and whose selects need no branch
 template <class T>
 concept binary_bits = hardware_binary<T> || lane_vector<T>;
+
+// The formulas' small constants, numerator / denominator, exact in every type.
+// The class types (the multiprecision numbers, scaled<T>) make each one once, as
+// constructing an MPFR number allocates. A run-time precision type (MPFR's
+// mpfr_float) makes it at the current default precision, as Num(k) would, and
+// again when that changes: Boost gives an operation's result the largest
+// precision of its operands. The other types build it in place, where it costs
+// nothing.
+template <class Num, int numerator, int denominator = 1>
+Num make_constant() {
+  if constexpr (denominator == 1) return Num(numerator);
+  else return Num(Num(numerator) / Num(denominator));
+}
+
+template <class Num, int numerator, int denominator = 1>
+[[gnu::always_inline]] inline decltype(auto) constant() {
+  if constexpr (boost::multiprecision::detail::is_variable_precision<Num>::value) {
+    thread_local struct {
+      unsigned digits10 = 0;
+      Num value;
+    } made;
+    if (made.digits10 != Num::default_precision()) [[unlikely]] {
+      made.value = make_constant<Num, numerator, denominator>();
+      made.digits10 = Num::default_precision();
+    }
+    return (made.value);
+  } else if constexpr (std::is_class_v<Num> && !lane_vector<Num>) {
+    static const Num value = make_constant<Num, numerator, denominator>();
+    return (value);
+  } else if constexpr (denominator == 1) {
+    return Num(numerator);
+  } else {
+    return Num(scalar_of_t<Num>(numerator) / scalar_of_t<Num>(denominator));
+  }
+}
 
 // Whether T's fma rounds once. Boost 1.74's cpp_bin_float computes fma as a
 // product and a sum, rounding twice; it gets Dekker's product instead.
@@ -425,11 +461,19 @@ normal_factors<T> subnormal_phi_factors(const T& phi, const T& x) {
   return {T(std::make_signed_t<bits>(std::bit_cast<bits>(phi))) * least_subnormal_up, T(x * down), down, true};
 }
 
+// phi and x themselves, where nothing moves: references, as a copy of a
+// multiprecision number allocates. Valid while phi and x are.
+template <class T>
+struct unmoved_factors {
+  const T& phi;
+  const T& x;
+};
+
 // The factors of phi x: unmoved unless `phi_is_subnormal`, a compile-time fact.
 template <bool phi_is_subnormal, class T>
-normal_factors<T> factors_of(const T& phi, const T& x) {
+auto factors_of(const T& phi, const T& x) {
   if constexpr (phi_is_subnormal) return subnormal_phi_factors(phi, x);
-  else return {phi, x, T(1), false};
+  else return unmoved_factors<T>{phi, x};
 }
 
 // The factors for any phi > 0, by selects (the batch's lanes).
@@ -440,7 +484,7 @@ normal_factors<T> normal_factors_of(const T& phi, const T& x) {
     const auto moved = subnormal_phi_factors(phi, x);
     return {select(subnormal, moved.phi, phi), select(subnormal, moved.x, x), select(subnormal, moved.down, T(1)), subnormal};
   } else {
-    return factors_of<false>(phi, x);
+    return {phi, x, T(1), false};
   }
 }
 
