@@ -289,6 +289,52 @@ TYPED_TEST(SquareRoot, IsCorrectlyRounded) {
   });
 }
 
+// MPFR's TwoSum (detail::two_sum_by_magnitude, which two_sum takes for a
+// run-time precision type): Fast2Sum on the operands ordered by signs and
+// comparisons. Its pair must be Knuth's TwoSum's bit for bit, signs of zero
+// included, and exact, on operands of either sign and any ratio of
+// magnitudes: equal, opposite (an exact zero), one ulp apart, far apart, and
+// zeros of either sign.
+TEST(TwoSum, MpfrByMagnitudeIsKnuthsPairBitForBit) {
+  const int saved = mpfr_float::default_precision();
+  mpfr_float::default_precision(50);
+  std::mt19937_64 random(20261129);
+  std::uniform_real_distribution<double> significand(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-300, 300), kind(0, 7);
+  const auto draw = [&] {
+    using std::ldexp;
+    return mpfr_float(ldexp(mpfr_float(significand(random)) * mpfr_float(significand(random)), exponent(random)));
+  };
+  const auto bits_of = [](const mpfr_float& x) {
+    using std::signbit;
+    return x.str(0, std::ios_base::scientific) + (signbit(x) ? "-" : "+");
+  };
+  long mismatches = 0, inexact = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const mpfr_float a = kind(random) == 0 ? mpfr_float(i % 2 ? -0.0 : 0.0) : draw();
+    mpfr_float b;
+    switch (kind(random)) {
+      case 0: b = mpfr_float(i % 3 ? -0.0 : 0.0); break;
+      case 1: b = -a; break;
+      case 2: b = a; break;
+      case 3: b = -detail::next_up(a); break;
+      case 4: b = detail::next_down(a) - a; break;
+      default: b = draw();
+    }
+    const auto pair = detail::two_sum(a, b), knuth = detail::knuth_two_sum(a, b);
+    if (bits_of(pair.high) != bits_of(knuth.high) || bits_of(pair.low) != bits_of(knuth.low)) {
+      if (++mismatches <= 5) ADD_FAILURE() << "two_sum(" << bits_of(a) << ", " << bits_of(b) << ") = " << bits_of(pair.high) << " + " << bits_of(pair.low);
+    }
+    reference::real sum(1024), expected(1024);
+    mpfr_add(sum.get(), pair.high.backend().data(), pair.low.backend().data(), MPFR_RNDN);  // exact at 1024 bits
+    mpfr_add(expected.get(), a.backend().data(), b.backend().data(), MPFR_RNDN);
+    inexact += mpfr_equal_p(sum.get(), expected.get()) == 0;
+  }
+  mpfr_float::default_precision(saved);
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(inexact, 0);
+}
+
 // The weakness square_root works around: libquadmath's own sqrtq is faithful,
 // not correctly rounded. Over squares of random float128 significands, some
 // roots come back one ulp off.

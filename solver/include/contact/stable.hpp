@@ -73,22 +73,21 @@ template <class Num>
   return detail::constant<Num, 2>() * one_plus_phi.high;
 }
 
-// -N / D from N's parts and inverse = 1 / D: push = phi gap with its rounding
+// -N / D from N's parts, D and inverse = 1 / D: push = phi gap with its rounding
 // error push_error, root = sqrt of the discriminant. `factors` are phi's and
 // gap's (detail::factors_of): with a subnormal phi the products with phi are
 // formed from normal factors of the same exact products, (phi 2^64) (x 2^-64),
 // as a subnormal operand costs a microcode assist; the values are the same.
 template <bool phi_is_subnormal, class Num, class Factors>
 [[gnu::always_inline]] inline Num impact_quotient(const Num& u, const Num& push, const Num& push_error, const Num& root,
-                                                  const detail::exact_pair<Num>& one_plus_phi, const Num& inverse,
-                                                  const Factors& factors) {
+                                                  const detail::exact_pair<Num>& one_plus_phi, const Num& denominator,
+                                                  const Num& inverse, const Factors& factors) {
   using detail::fused_multiply_add;
   using detail::two_sum;
   const auto& two = detail::constant<Num, 2>();
   const auto head = two_sum(u, Num(two * push));
   const auto numerator = two_sum(head.high, root);
   const Num numerator_low = numerator.low + (head.low + two * push_error);
-  const Num denominator = impact_denominator(one_plus_phi);
   const Num quotient = numerator.high * inverse;
   const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
   const Num correction = [&] {
@@ -114,8 +113,9 @@ template <bool phi_is_subnormal = false, class Num>
   const Num root = square_root(discriminant(u, Num(push * (u - gap))));
   const auto& one = detail::constant<Num, 1>();
   const auto one_plus_phi = two_sum(one, phi);
-  const Num inverse = one / impact_denominator(one_plus_phi);
-  return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, inverse, factors), root};
+  const Num denominator = impact_denominator(one_plus_phi);
+  const Num inverse = one / denominator;
+  return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, denominator, inverse, factors), root};
 }
 
 template <bool phi_is_subnormal = false, class Num>
@@ -464,8 +464,9 @@ namespace stage {
 template <class T>
 [[gnu::always_inline]] inline solution<T> plain(const T& u, const T& dy, const T& phi) {
   if (dy <= 0) {
-    if (u <= -dy) return free_flight(u);
-    return impact_answer(stable_form::impact(u, T(-dy), phi), u, dy);
+    const T gap = -dy;
+    if (u <= gap) return free_flight(u);
+    return impact_answer(stable_form::impact(u, gap, phi), u, dy);
   }
   if (stays_in_contact<true>(u, dy, phi)) return contact_answer(stable_form::contact(u, dy, phi), dy);
   return release_answer(stable_form::release(u, dy, phi), dy);

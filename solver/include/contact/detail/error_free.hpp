@@ -9,8 +9,10 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <boost/math/tools/precision.hpp>
+#include <boost/multiprecision/traits/is_variable_precision.hpp>
 
 namespace contact::detail {
 
@@ -44,10 +46,33 @@ exact_pair<T> knuth_two_sum(const T& a, const T& b) {
   return {sum, (a - a_virtual) + (b - b_virtual)};
 }
 
+// The same pair for a run-time precision type (MPFR's mpfr_float), whose every
+// operation makes a new number: Fast2Sum's three operations, the larger
+// magnitude first, told apart by signs and comparisons, which make none.
+// Either a zero operand goes to TwoSum: a zero error's sign may differ.
+template <class T>
+exact_pair<T> two_sum_by_magnitude(const T& a, const T& b) {
+  const int a_sign = a.sign(), b_sign = b.sign();
+  if (a_sign == 0 || b_sign == 0) return knuth_two_sum(a, b);
+  T sum = a + b;
+  // |a| >= |b|: of a common sign, a lies as far from zero; of opposite signs,
+  // the sum is zero or has a's sign (rounding keeps a sum's sign)
+  const bool a_is_larger = a_sign == b_sign ? (a_sign > 0 ? !(a < b) : !(b < a)) : sum.sign() != b_sign;
+  const T& larger = a_is_larger ? a : b;
+  const T& smaller = a_is_larger ? b : a;
+  // (smaller's copy in the sum: a named number, as Boost subtracts from a
+  // temporary right operand by negating the reverse difference, a zero's sign flipped)
+  const T smaller_in_sum = sum - larger;
+  T error = smaller - smaller_in_sum;
+  return {std::move(sum), std::move(error)};
+}
+
 template <class T>
 exact_pair<T> two_sum(const T& a, const T& b) {
   if constexpr (binary128_class<T>) {
     return two_sum_in_integers(a, b);
+  } else if constexpr (boost::multiprecision::detail::is_variable_precision<T>::value) {
+    return two_sum_by_magnitude(a, b);
   } else {
     return knuth_two_sum(a, b);
   }
