@@ -344,7 +344,6 @@ TEST(EmulatedTwoSum, Float128IsKnuthsOnHardOperands) {
             0);
 }
 
-
 // binary128's exact product in integers (detail::two_prod_in_integers, which
 // two_prod calls for it): the pair a * b and MPFR's fma(a, b,
 // -(a * b)), bit for bit, through two_prod and product_error alike; where the

@@ -323,7 +323,9 @@ TEST(TwoSum, MpfrByMagnitudeIsKnuthsPairBitForBit) {
     }
     const auto pair = detail::two_sum(a, b), knuth = detail::knuth_two_sum(a, b);
     if (bits_of(pair.high) != bits_of(knuth.high) || bits_of(pair.low) != bits_of(knuth.low)) {
-      if (++mismatches <= 5) ADD_FAILURE() << "two_sum(" << bits_of(a) << ", " << bits_of(b) << ") = " << bits_of(pair.high) << " + " << bits_of(pair.low);
+      if (++mismatches <= 5)
+        ADD_FAILURE() << "two_sum(" << bits_of(a) << ", " << bits_of(b) << ") = " << bits_of(pair.high) << " + "
+                      << bits_of(pair.low);
     }
     reference::real sum(1024), expected(1024);
     mpfr_add(sum.get(), pair.high.backend().data(), pair.low.backend().data(), MPFR_RNDN);  // exact at 1024 bits

@@ -85,17 +85,18 @@ template <bool phi_is_subnormal, class Num, class Factors>
   using detail::fused_multiply_add;
   using detail::two_sum;
   const auto& two = detail::constant<Num, 2>();
-  const auto head = two_sum(u, Num(two * push));
+  const auto head = two_sum(u, two * push);
   const auto numerator = two_sum(head.high, root);
   const Num numerator_low = numerator.low + (head.low + two * push_error);
   const Num quotient = numerator.high * inverse;
   const Num residual = fused_multiply_add(-quotient, denominator, numerator.high);
+  const Num addend = residual + numerator_low;
   const Num correction = [&] {
     // 2 phi q: (2 phi 2^64) (q 2^-64) where phi is subnormal (1 + phi's low part is phi itself)
     if constexpr (phi_is_subnormal) {
-      return fused_multiply_add(-Num(quotient * factors.down), Num(two * factors.phi), Num(residual + numerator_low));
+      return fused_multiply_add(-Num(quotient * factors.down), Num(two * factors.phi), addend);
     } else {
-      return fused_multiply_add(-quotient, Num(one_plus_phi.low + one_plus_phi.low), Num(residual + numerator_low));
+      return fused_multiply_add(-quotient, Num(one_plus_phi.low + one_plus_phi.low), addend);
     }
   }();
   return -fused_multiply_add(correction, inverse, quotient);
@@ -131,7 +132,7 @@ template <class Num>
 [[gnu::always_inline]] inline fraction<Num> contact_fraction(const Num& u, const Num& phi, const Num& phi_factor,
                                                              const Num& dy_factor) {
   using detail::fused_multiply_add;
-  return {fused_multiply_add(phi_factor, Num(detail::constant<Num, 2>() * dy_factor), -u), detail::constant<Num, 1>() + phi};
+  return {fused_multiply_add(phi_factor, detail::constant<Num, 2>() * dy_factor, -u), detail::constant<Num, 1>() + phi};
 }
 
 template <bool phi_is_subnormal = false, class Num>

@@ -68,8 +68,7 @@ concept binary_bits = hardware_binary<T> || lane_vector<T>;
 // nothing.
 template <class Num, int numerator, int denominator = 1>
 Num make_constant() {
-  if constexpr (denominator == 1) return Num(numerator);
-  else return Num(Num(numerator) / Num(denominator));
+  return Num(scalar_of_t<Num>(numerator) / scalar_of_t<Num>(denominator));  // (lanes: in their scalar)
 }
 
 template <class Num, int numerator, int denominator = 1>
@@ -79,18 +78,16 @@ template <class Num, int numerator, int denominator = 1>
       unsigned digits10 = 0;
       Num value;
     } made;
-    if (made.digits10 != Num::default_precision()) [[unlikely]] {
+    if (const unsigned digits10 = Num::default_precision(); made.digits10 != digits10) [[unlikely]] {
       made.value = make_constant<Num, numerator, denominator>();
-      made.digits10 = Num::default_precision();
+      made.digits10 = digits10;
     }
     return (made.value);
   } else if constexpr (std::is_class_v<Num> && !lane_vector<Num>) {
     static const Num value = make_constant<Num, numerator, denominator>();
     return (value);
-  } else if constexpr (denominator == 1) {
-    return Num(numerator);
   } else {
-    return Num(scalar_of_t<Num>(numerator) / scalar_of_t<Num>(denominator));
+    return make_constant<Num, numerator, denominator>();
   }
 }
 
