@@ -337,6 +337,84 @@ TEST(TwoSum, MpfrByMagnitudeIsKnuthsPairBitForBit) {
   EXPECT_EQ(inexact, 0);
 }
 
+// For MPFR, detail::fused_multiply_add rounds into the storage of an operand
+// that is a temporary (the first, the third, or both). Its result must be
+// Boost's fma's bit for bit, precision included: operands of one precision,
+// and of mixed precisions (Boost's result takes the largest); addends that
+// cancel the product exactly or nearly, zeros of either sign, far apart.
+TEST(FusedMultiplyAdd, MpfrIntoATemporaryOperandIsBoostsFmaBitForBit) {
+  const int saved = mpfr_float::default_precision();
+  std::mt19937_64 random(20261130);
+  std::uniform_real_distribution<double> significand(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-300, 300), kind(0, 5), digits(0, 2);
+  const int precisions[] = {20, 50, 80};
+  const auto draw = [&](int precision) {
+    using std::ldexp;
+    mpfr_float::default_precision(precision);
+    return mpfr_float(ldexp(mpfr_float(significand(random)) * mpfr_float(significand(random)), exponent(random)));
+  };
+  const auto bits_of = [](const mpfr_float& x) {
+    using std::signbit;
+    return x.str(0, std::ios_base::scientific) + (signbit(x) ? "-" : "+") +
+           std::to_string(mpfr_get_prec(x.backend().data()));
+  };
+  long mismatches = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const bool mixed = i % 4 == 0;
+    const auto precision = [&] { return mixed ? precisions[digits(random)] : 50; };
+    const mpfr_float a = draw(precision()), b = draw(precision());
+    mpfr_float::default_precision(precision());
+    mpfr_float c;
+    switch (kind(random)) {
+      case 0: c = mpfr_float(i % 2 ? -0.0 : 0.0); break;
+      case 1: c = -(a * b); break;                  // the product rounded: the fma gives its error
+      case 2: c = detail::next_up(mpfr_float(-(a * b))); break;
+      default: c = draw(precision());
+    }
+    mpfr_float::default_precision(30);  // neither's result may depend on it
+    using boost::multiprecision::fma;
+    const std::string expected = bits_of(fma(a, b, c));
+    const std::string into_first = bits_of(detail::fused_multiply_add(mpfr_float(a), b, c));
+    const std::string into_third = bits_of(detail::fused_multiply_add(a, b, mpfr_float(c)));
+    const std::string into_either = bits_of(detail::fused_multiply_add(mpfr_float(a), b, mpfr_float(c)));
+    if (into_first != expected || into_third != expected || into_either != expected) {
+      if (++mismatches <= 5)
+        ADD_FAILURE() << "fma(" << bits_of(a) << ", " << bits_of(b) << ", " << bits_of(c) << ") = " << expected
+                      << ", in place " << into_first << ", " << into_third << ", " << into_either;
+    }
+  }
+  mpfr_float::default_precision(saved);
+  EXPECT_EQ(mismatches, 0);
+}
+
+// detail::magnitude_exceeds compares magnitudes in place for MPFR: it must
+// agree with fabs(x) > bound, on equal and opposite magnitudes, zeros and
+// neighbours.
+TEST(MagnitudeExceeds, MpfrIsFabsComparedWithTheBound) {
+  const int saved = mpfr_float::default_precision();
+  mpfr_float::default_precision(50);
+  std::mt19937_64 random(20261131);
+  std::uniform_real_distribution<double> value(-4.0, 4.0);
+  std::uniform_int_distribution<int> kind(0, 4);
+  long disagreements = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const mpfr_float x(i % 7 == 0 ? (i % 2 ? -0.0 : 0.0) : value(random));
+    using std::fabs;
+    mpfr_float bound;
+    switch (kind(random)) {
+      case 0: bound = fabs(x); break;
+      case 1: bound = detail::next_up(mpfr_float(fabs(x))); break;
+      case 2: bound = detail::next_down(mpfr_float(fabs(x))); break;
+      case 3: bound = mpfr_float(0); break;
+      default: bound = fabs(mpfr_float(value(random)));
+    }
+    if (bound < 0) bound = mpfr_float(0);
+    disagreements += detail::magnitude_exceeds(x, bound) != (fabs(x) > bound);
+  }
+  mpfr_float::default_precision(saved);
+  EXPECT_EQ(disagreements, 0);
+}
+
 // The weakness square_root works around: libquadmath's own sqrtq is faithful,
 // not correctly rounded. Over squares of random float128 significands, some
 // roots come back one ulp off.

@@ -111,12 +111,13 @@ template <bool phi_is_subnormal = false, class Num>
   using detail::two_sum;
   const auto factors = detail::factors_of<phi_is_subnormal>(phi, gap);
   const auto [push, push_error] = detail::two_prod(factors.phi, factors.x);  // phi |dy|
-  const Num root = square_root(discriminant(u, Num(push * (u - gap))));
+  Num root = square_root(discriminant(u, Num(push * (u - gap))));
   const auto& one = detail::constant<Num, 1>();
   const auto one_plus_phi = two_sum(one, phi);
   const Num denominator = impact_denominator(one_plus_phi);
   const Num inverse = one / denominator;
-  return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, denominator, inverse, factors), root};
+  return {impact_quotient<phi_is_subnormal>(u, push, push_error, root, one_plus_phi, denominator, inverse, factors),
+          std::move(root)};
 }
 
 template <bool phi_is_subnormal = false, class Num>
@@ -165,8 +166,8 @@ struct stiffness_pair {
 template <class Num>
 [[gnu::always_inline]] inline stiffness_pair<Num> stiffness_of(const Num& phi_dy, const Num& phi_dy_error, const Num& dy) {
   using detail::fused_multiply_add;
-  const auto product = detail::two_prod(phi_dy, dy);
-  return {product.high, fused_multiply_add(phi_dy_error, dy, product.low)};
+  auto product = detail::two_prod(phi_dy, dy);
+  return {std::move(product.high), fused_multiply_add(phi_dy_error, dy, product.low)};
 }
 
 // The release's parts are selected by the sign of u, not branched on: it is a
@@ -233,16 +234,16 @@ template <bool phi_is_subnormal = false, class Num>
   constexpr bool branched = !detail::binary_bits<Num>;
   if constexpr (branched) {
     if (!(u > detail::constant<Num, 0>())) {
-      const Num root = square_root(discriminant(u, Num(Num(factors.phi * factors.x) * dy)));
-      return {plain_release(u, root, detail::constant<Num, 1, 2>()), root};
+      Num root = square_root(discriminant(u, Num(Num(factors.phi * factors.x) * dy)));
+      return {plain_release(u, root, detail::constant<Num, 1, 2>()), std::move(root)};
     }
   }
   const auto phi_dy = detail::two_prod(factors.phi, factors.x);
   const auto stiffness = stiffness_of(phi_dy.high, phi_dy.low, dy);
-  const Num root = square_root(discriminant(u, release_term<branched>(u, stiffness)));
+  Num root = square_root(discriminant(u, release_term<branched>(u, stiffness)));
   const auto u_plus_root = detail::two_sum(u, root);
   const Num inverse = detail::constant<Num, 1>() / release_denominator<branched>(u, u_plus_root);
-  return {release_quotient<branched>(u, stiffness, root, u_plus_root, inverse), root};
+  return {release_quotient<branched>(u, stiffness, root, u_plus_root, inverse), std::move(root)};
 }
 
 template <bool phi_is_subnormal = false, class Num>
@@ -308,17 +309,16 @@ struct contact_estimate {
 template <class T>
 contact_estimate<T> estimate_contact(const T& sum, const T& phi_factor, const T& dy_factor) {
   using std::fabs;
-  return {fused_multiply_add(-phi_factor, dy_factor, sum), T(std::numeric_limits<scalar_of_t<T>>::epsilon()) * fabs(sum)};
+  return {fused_multiply_add(-phi_factor, dy_factor, sum), epsilon<T>() * fabs(sum)};
 }
 
 // (A.21) u >= dy (phi - 1), i.e. the exact sum u + dy - phi dy is >= 0, where
 // the pre-test tells it: +1, -1, or 0 within the margin.
 template <bool phi_is_subnormal = false, class T>
 int estimated_contact_sign(const T& u, const T& dy, const T& phi) {
-  using std::fabs;
   const auto factors = factors_of<phi_is_subnormal>(phi, dy);  // phi dy, from normal factors (impact_with_square_root)
   const auto [estimate, margin] = estimate_contact(T(u + dy), factors.phi, factors.x);
-  if (fabs(estimate) > margin) return estimate > 0 ? 1 : -1;
+  if (magnitude_exceeds(estimate, margin)) return estimate > 0 ? 1 : -1;
   return 0;
 }
 
@@ -391,22 +391,23 @@ bool release_root_rounds_to_infinity(const T& u, const T& dy, const T& phi) {
 // away from zero (from -0 for dy = +0), cheap enough to compute whether or not
 // the clamp takes it, so that each clamp is one min or max (min_of, max_of):
 // near a rigid or a vanishing barrier the computed root lands on -u or dy
-// about half the time, and a branch there is a coin toss.
+// about half the time, and a branch there is a coin toss. s comes by value and
+// moves through, as a copy of an MPFR number allocates.
 template <class T>
-T clamped_below_nonpositive(const T& s, const T& dy) {  // dy <= 0: s < dy, else next_down(dy)
+T clamped_below_nonpositive(T s, const T& dy) {  // dy <= 0: s < dy, else next_down(dy)
   if constexpr (binary_bits<T>) {
     return min_of(s, step_away_from_zero(with_sign_bit(dy)));  // s < dy ? s : below (s < below iff s < dy, or s is below itself)
   } else {
-    return s < dy ? s : next_down(dy);
+    return s < dy ? std::move(s) : next_down(dy);
   }
 }
 
 template <class T>
-T clamped_above_positive(const T& s, const T& dy) {  // dy > 0: s > dy, else next_up(dy)
+T clamped_above_positive(T s, const T& dy) {  // dy > 0: s > dy, else next_up(dy)
   if constexpr (binary_bits<T>) {
     return max_of(s, step_away_from_zero(dy));  // s > dy ? s : above (likewise)
   } else {
-    return s > dy ? s : next_up(dy);
+    return s > dy ? std::move(s) : next_up(dy);
   }
 }
 
@@ -416,7 +417,7 @@ T impact_clamped(T s, const T& u, const T& dy) {
   // the root lies in (-u, dy): R(-u) = -phi (dy + u)^2 / u < 0 < R(dy) = dy + u;
   // clamping to -u also keeps a root near -DBL_MAX from rounding to -inf
   s = max_of(T(-u), s);  // s < -u ? -u : s
-  return clamped_below_nonpositive(s, dy);
+  return clamped_below_nonpositive(std::move(s), dy);
 }
 
 template <class T>
@@ -432,8 +433,8 @@ solution<T> free_flight(const T& u) {
 
 // Each case's answer: its formula's s, clamped onto the case's side of dy.
 template <class T>
-solution<T> impact_answer(const T& s, const T& u, const T& dy) {
-  return {impact_clamped(s, u, dy), contact_case::impact};
+solution<T> impact_answer(T s, const T& u, const T& dy) {
+  return {impact_clamped(std::move(s), u, dy), contact_case::impact};
 }
 
 template <class T>
@@ -442,8 +443,8 @@ solution<T> contact_answer(const T& s, const T& dy) {
 }
 
 template <class T>
-solution<T> release_answer(const T& s, const T& dy) {
-  return {clamped_above_positive(s, dy), contact_case::release};
+solution<T> release_answer(T s, const T& dy) {
+  return {clamped_above_positive(std::move(s), dy), contact_case::release};
 }
 
 // The stages of solve_stable. Each gives the same s and case, bit for bit,

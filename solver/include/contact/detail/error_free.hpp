@@ -60,10 +60,11 @@ exact_pair<T> two_sum_by_magnitude(const T& a, const T& b) {
   const bool a_is_larger = a_sign == b_sign ? (a_sign > 0 ? !(a < b) : !(b < a)) : sum.sign() != b_sign;
   const T& larger = a_is_larger ? a : b;
   const T& smaller = a_is_larger ? b : a;
-  // (smaller's copy in the sum: a named number, as Boost subtracts from a
-  // temporary right operand by negating the reverse difference, a zero's sign flipped)
-  const T smaller_in_sum = sum - larger;
-  T error = smaller - smaller_in_sum;
+  // smaller - (sum - larger), the difference rounded into its right operand's
+  // storage (MPFR allows it): Boost would subtract from a temporary right
+  // operand by negating the reverse difference, a zero's sign flipped
+  T error = sum - larger;
+  eval_subtract(error.backend(), smaller.backend(), error.backend());
   return {std::move(sum), std::move(error)};
 }
 

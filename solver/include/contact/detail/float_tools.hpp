@@ -59,13 +59,33 @@ using scalar_of_t = typename scalar_of<T>::type;
 template <class T>
 concept binary_bits = hardware_binary<T> || lane_vector<T>;
 
-// The formulas' small constants, numerator / denominator, exact in every type.
-// The class types (the multiprecision numbers, scaled<T>) make each one once, as
-// constructing an MPFR number allocates. A run-time precision type (MPFR's
-// mpfr_float) makes it at the current default precision, as Num(k) would, and
-// again when that changes: Boost gives an operation's result the largest
-// precision of its operands. The other types build it in place, where it costs
-// nothing.
+// The value make() gives, made where it costs least. The class types (the
+// multiprecision numbers, scaled<T>) make it once, as constructing an MPFR
+// number allocates. A run-time precision type (MPFR's mpfr_float) makes it at
+// the current default precision, as Num(k) would, and again when that
+// changes: Boost gives an operation's result the largest precision of its
+// operands. The other types build it in place, where it costs nothing.
+template <class Num, Num (*make)()>
+[[gnu::always_inline]] inline decltype(auto) made_once() {
+  if constexpr (boost::multiprecision::detail::is_variable_precision<Num>::value) {
+    thread_local struct {
+      unsigned digits10 = 0;
+      Num value;
+    } made;
+    if (const unsigned digits10 = Num::default_precision(); made.digits10 != digits10) [[unlikely]] {
+      made.value = make();
+      made.digits10 = digits10;
+    }
+    return (made.value);
+  } else if constexpr (std::is_class_v<Num> && !lane_vector<Num>) {
+    static const Num value = make();
+    return (value);
+  } else {
+    return make();
+  }
+}
+
+// The formulas' small constants, numerator / denominator, exact in every type
 template <class Num, int numerator, int denominator = 1>
 Num make_constant() {
   return Num(scalar_of_t<Num>(numerator) / scalar_of_t<Num>(denominator));  // (lanes: in their scalar)
@@ -73,22 +93,18 @@ Num make_constant() {
 
 template <class Num, int numerator, int denominator = 1>
 [[gnu::always_inline]] inline decltype(auto) constant() {
-  if constexpr (boost::multiprecision::detail::is_variable_precision<Num>::value) {
-    thread_local struct {
-      unsigned digits10 = 0;
-      Num value;
-    } made;
-    if (const unsigned digits10 = Num::default_precision(); made.digits10 != digits10) [[unlikely]] {
-      made.value = make_constant<Num, numerator, denominator>();
-      made.digits10 = digits10;
-    }
-    return (made.value);
-  } else if constexpr (std::is_class_v<Num> && !lane_vector<Num>) {
-    static const Num value = make_constant<Num, numerator, denominator>();
-    return (value);
-  } else {
-    return make_constant<Num, numerator, denominator>();
-  }
+  return made_once<Num, make_constant<Num, numerator, denominator>>();
+}
+
+// The machine epsilon of Num (of its lanes' scalar)
+template <class Num>
+Num make_epsilon() {
+  return Num(std::numeric_limits<scalar_of_t<Num>>::epsilon());
+}
+
+template <class Num>
+[[gnu::always_inline]] inline decltype(auto) epsilon() {
+  return made_once<Num, make_epsilon<Num>>();
 }
 
 // Whether T's fma rounds once. Boost 1.74's cpp_bin_float computes fma as a
@@ -127,6 +143,51 @@ inline constexpr bool product_error_by_dekker = !has_fused_fma<T>::value ||
 template <class T>
 T fused_multiply_add(const T& a, const T& b, const T& c);
 
+// MPFR numbers, whose every new number allocates
+template <class T>
+concept mpfr_number = requires(const T& x) { x.backend().data()->_mpfr_prec; };
+
+// For MPFR, an fma with a temporary operand rounds into that operand's
+// storage (MPFR allows the aliasing), as Boost's operators do with their
+// temporaries: the same value where the three share a precision, as they do
+// when made at one default precision; otherwise Boost's fma, whose result
+// takes the largest.
+template <mpfr_number T>
+T fused_multiply_add_into(T&& storage, const T& a, const T& b, const T& c) {
+  const auto precision = storage.backend().data()->_mpfr_prec;
+  if ((a.backend().data()->_mpfr_prec != precision) | (b.backend().data()->_mpfr_prec != precision) |
+      (c.backend().data()->_mpfr_prec != precision)) [[unlikely]]
+    return fma_rounded_once(a, b, c);
+  eval_multiply_add(storage.backend(), a.backend(), b.backend(), c.backend());
+  return std::move(storage);
+}
+
+template <mpfr_number T>
+T fused_multiply_add(T&& a, const T& b, const T& c) {
+  return fused_multiply_add_into(std::move(a), a, b, c);
+}
+
+template <mpfr_number T>
+T fused_multiply_add(const T& a, const T& b, T&& c) {
+  return fused_multiply_add_into(std::move(c), a, b, c);
+}
+
+template <mpfr_number T>
+T fused_multiply_add(T&& a, const T& b, T&& c) {
+  return fused_multiply_add_into(std::move(a), a, b, c);
+}
+
+// |x| > bound, for bound >= 0, without the number fabs would make for MPFR
+template <class T>
+bool magnitude_exceeds(const T& x, const T& bound) {
+  if constexpr (mpfr_number<T>) {
+    return mpfr_cmpabs(x.backend().data(), bound.backend().data()) > 0;
+  } else {
+    using std::fabs;
+    return fabs(x) > bound;
+  }
+}
+
 template <class T>
 T product_error(const T& a, const T& b, const T& product) {
   if constexpr (!product_error_by_dekker<T>) {
@@ -143,8 +204,9 @@ exact_pair<T> two_prod(const T& a, const T& b) {
     exact_pair<T> parts;
     if (two_prod_in_integers(a, b, parts)) [[likely]] return parts;
   }
-  const T product = a * b;
-  return {product, product_error(a, b, product)};
+  T product = a * b;
+  T error = product_error(a, b, product);
+  return {std::move(product), std::move(error)};  // (moved: copying an MPFR number allocates)
 }
 
 // head + tail rounded to nearest, for |tail| below an ulp of head, where

@@ -55,7 +55,7 @@ struct safe_window {
       if (!format::unpack(x, parts)) return x == 0;
       const long E = half_width(), binade = parts.exponent + format::digits - 1;
       return (-E <= binade) & ((binade < E) | ((binade == E) & (parts.significand == uint128(1) << (format::digits - 1))));
-    } else if constexpr (requires { x.backend().data()->_mpfr_exp; }) {
+    } else if constexpr (mpfr_number<T>) {
       // MPFR: |x| in [2^(e-1), 2^e) for a regular x, e its exponent field;
       // zero, infinities, NaN (special values of the field) and |x| in
       // [2^E, 2^(E+1)) take the general test below
