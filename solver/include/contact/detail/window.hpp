@@ -39,13 +39,19 @@ template <class T>
 inline constexpr long plain_window = window_half_width<T>(std::numeric_limits<T>::digits);
 
 template <class T>
+  requires hardware_binary<T>
+bool magnitude_inside_plain_window(const T& x);
+
+template <class T>
 struct safe_window {
   static long half_width() {
     if constexpr (std::is_floating_point_v<T>) return plain_window<T>;
     else return window_half_width<T>(precision_of<T>());
   }
   static bool holds(const T& x) {
-    if constexpr (emulated_format<T>::available) {
+    if constexpr (hardware_binary<T>) {
+      return (x == 0) | magnitude_inside_plain_window(x);  // on the bits, without a branch
+    } else if constexpr (emulated_format<T>::available) {
       // x87 long double and binary128 on their bits, as float and double
       // (magnitude_inside_plain_window): zero is inside; subnormals,
       // infinities and NaN are not (& and |, not && and ||: no branch that
