@@ -289,9 +289,14 @@ TYPED_TEST(SquareRoot, IsCorrectlyRounded) {
   });
 }
 
-// MPFR's TwoSum (detail::two_sum_by_magnitude, which two_sum takes for a
-// run-time precision type): Fast2Sum on the operands ordered by signs and
-// comparisons. Its pair must be Knuth's TwoSum's bit for bit, signs of zero
+// An MPFR number's value, sign (of zero too) and precision in bits, as text to compare
+std::string bits_of(const mpfr_float& x) {
+  using std::signbit;
+  return x.str(0, std::ios_base::scientific) + (signbit(x) ? "-" : "+") + std::to_string(mpfr_get_prec(x.backend().data()));
+}
+
+// MPFR's TwoSum (detail::two_sum_by_magnitude, which two_sum takes for MPFR
+// numbers): Fast2Sum on the operands ordered by signs and comparisons. Its pair must be Knuth's TwoSum's bit for bit, signs of zero
 // included, and exact, on operands of either sign and any ratio of
 // magnitudes: equal, opposite (an exact zero), one ulp apart, far apart, and
 // zeros of either sign.
@@ -304,10 +309,6 @@ TEST(TwoSum, MpfrByMagnitudeIsKnuthsPairBitForBit) {
   const auto draw = [&] {
     using std::ldexp;
     return mpfr_float(ldexp(mpfr_float(significand(random)) * mpfr_float(significand(random)), exponent(random)));
-  };
-  const auto bits_of = [](const mpfr_float& x) {
-    using std::signbit;
-    return x.str(0, std::ios_base::scientific) + (signbit(x) ? "-" : "+");
   };
   long mismatches = 0, inexact = 0;
   for (int i = 0; i < 100000; ++i) {
@@ -352,11 +353,6 @@ TEST(FusedMultiplyAdd, MpfrIntoATemporaryOperandIsBoostsFmaBitForBit) {
     using std::ldexp;
     mpfr_float::default_precision(precision);
     return mpfr_float(ldexp(mpfr_float(significand(random)) * mpfr_float(significand(random)), exponent(random)));
-  };
-  const auto bits_of = [](const mpfr_float& x) {
-    using std::signbit;
-    return x.str(0, std::ios_base::scientific) + (signbit(x) ? "-" : "+") +
-           std::to_string(mpfr_get_prec(x.backend().data()));
   };
   long mismatches = 0;
   for (int i = 0; i < 100000; ++i) {

@@ -260,7 +260,7 @@ template <class T>
 inline constexpr bool compared_on_bits = emulated_format<T>::available && !std::is_floating_point_v<T>;
 
 // safe_window<T>::holds (|x| in [2^-w, 2^w] or x = 0, w = safe_window<T>::half_width()),
-// on the bits for double, x87 long double and binary128; the fast path's
+// which reads the bits of double, x87 long double and binary128; the fast path's
 // analysis assumes u, dy, phi and s0 there. zero_allowed: whether x = 0 passes.
 template <class T>
 bool in_fast_window(const T& x, bool zero_allowed) {
@@ -269,8 +269,7 @@ bool in_fast_window(const T& x, bool zero_allowed) {
   } else {
     if (x == 0) return zero_allowed;
   }
-  if constexpr (std::is_same_v<T, double>) return magnitude_inside_plain_window(x);
-  else return safe_window<T>::holds(x);
+  return safe_window<T>::holds(x);
 }
 
 // phi < 0, for a phi that is not NaN.

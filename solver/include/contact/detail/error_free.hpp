@@ -12,7 +12,6 @@
 #include <utility>
 
 #include <boost/math/tools/precision.hpp>
-#include <boost/multiprecision/traits/is_variable_precision.hpp>
 
 namespace contact::detail {
 
@@ -46,11 +45,15 @@ exact_pair<T> knuth_two_sum(const T& a, const T& b) {
   return {sum, (a - a_virtual) + (b - b_virtual)};
 }
 
-// The same pair for a run-time precision type (MPFR's mpfr_float), whose every
-// operation makes a new number: Fast2Sum's three operations, the larger
-// magnitude first, told apart by signs and comparisons, which make none.
-// Either a zero operand goes to TwoSum: a zero error's sign may differ.
+// MPFR numbers (Boost's mpfr_float), whose every new number allocates
 template <class T>
+concept mpfr_number = requires(const T& x) { x.backend().data()->_mpfr_prec; };
+
+// The same pair for MPFR, whose every operation makes a new number:
+// Fast2Sum's three operations, the larger magnitude first, told apart by
+// signs and comparisons, which make none. Either a zero operand goes to
+// TwoSum: a zero error's sign may differ.
+template <mpfr_number T>
 exact_pair<T> two_sum_by_magnitude(const T& a, const T& b) {
   const int a_sign = a.sign(), b_sign = b.sign();
   if (a_sign == 0 || b_sign == 0) return knuth_two_sum(a, b);
@@ -72,7 +75,7 @@ template <class T>
 exact_pair<T> two_sum(const T& a, const T& b) {
   if constexpr (binary128_class<T>) {
     return two_sum_in_integers(a, b);
-  } else if constexpr (boost::multiprecision::detail::is_variable_precision<T>::value) {
+  } else if constexpr (mpfr_number<T>) {
     return two_sum_by_magnitude(a, b);
   } else {
     return knuth_two_sum(a, b);

@@ -143,10 +143,6 @@ inline constexpr bool product_error_by_dekker = !has_fused_fma<T>::value ||
 template <class T>
 T fused_multiply_add(const T& a, const T& b, const T& c);
 
-// MPFR numbers, whose every new number allocates
-template <class T>
-concept mpfr_number = requires(const T& x) { x.backend().data()->_mpfr_prec; };
-
 // For MPFR, an fma with a temporary operand rounds into that operand's
 // storage (MPFR allows the aliasing), as Boost's operators do with their
 // temporaries: the same value where the three share a precision, as they do
