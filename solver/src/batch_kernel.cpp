@@ -820,6 +820,62 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
   lanes_in.moved = false;
 }
 
+// Each lane's case, as solve_cases decides (A.21): the pre-test, and the
+// exact sum for the lanes it leaves undecided near the boundary; u, dy, phi
+// as the stable path takes them (moved), phi dy as phi_factor dy_factor.
+// `outside` is null where every lane lies in the common window, as in most
+// vectors: the decision then takes the fewest mask operations. Otherwise it
+// holds what the first pass found of the vector's lanes, and a lane of a
+// subnormal phi that the pre-test leaves undecided leaves `answerable`.
+template <class D>
+struct outside_window {
+  lane_mask<D> answerable, free_flight, subnormal_phi;
+};
+
+template <class D>
+struct lane_cases {
+  lane_mask<D> free_flight, impact, contact, release;
+  hn::Vec<D> which;  // the case numbers (contact_case), in T
+};
+
+template <bool every_lane_inside, class D>
+HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi, lanes<D> phi_factor, lanes<D> dy_factor,
+                                      std::type_identity_t<outside_window<D>>* outside) {
+  using T = hn::TFromD<D>;
+  using L = lanes<D>;
+  // (no lane's dy is NaN: the lanes that cannot be answered solve 1 = 1 = 1)
+  const auto contact_before = dy > L(0), impact_before = dy <= L(0);
+  const L sum = u + dy;
+  const auto [estimate, margin] = detail::estimate_contact(sum, phi_factor, dy_factor);
+  const auto decided = fabs(estimate) > margin;
+  auto stays = estimate > L(0);
+  auto undecided = contact_before & !decided;
+  if constexpr (!every_lane_inside) {
+    // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
+    // should it not, solve_stable takes the lane)
+    outside->answerable = outside->answerable & !(outside->subnormal_phi & undecided);
+    undecided = outside->answerable & undecided;
+  }
+  if (!hn::AllFalse(d, undecided.m)) [[unlikely]]
+    stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(u, dy, phi));
+  lane_cases<D> cases{impact_before & (sum <= L(0)), {}, contact_before & stays, contact_before & !stays, {}};
+  if constexpr (every_lane_inside) {
+    cases.impact = impact_before & !cases.free_flight;
+  } else {
+    const auto answerable = outside->answerable;
+    cases.free_flight = outside->free_flight | (answerable & cases.free_flight);
+    cases.impact = answerable & impact_before & !cases.free_flight;
+    cases.contact = answerable & cases.contact;
+    cases.release = answerable & cases.release & !cases.free_flight;
+  }
+  cases.which = hn::IfThenElse(cases.free_flight.m, hn::Set(d, T(contact_case::free)),
+                               hn::IfThenElse(contact_before.m,
+                                              hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
+                                                             hn::Set(d, T(contact_case::release))),
+                                              hn::Set(d, T(contact_case::impact))));
+  return cases;
+}
+
 // The first pass over one vector at lane i: free flight answered (s = -u for
 // any valid input, written now); the other lanes that the vectors can take,
 // inside the common window or moved by phi's band (solve_stable's moved stage),
@@ -850,13 +906,29 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const auto window_offsets = hn::Or(hn::Or(hn::Sub(abs_u, lowest_uv), hn::Sub(abs_dy, lowest_uv)),
                                      hn::Sub(phi_bits, hn::Set(du, detail::common_window_lowest_phi<T>)));
   const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
+  const hn::Rebind<std::int32_t, D> di32;
+  auto which_lanes = [&](hn::Vec<D> cases) {
+    if constexpr (sizeof(T) == 8) return hn::DemoteTo(di32, cases);
+    else return hn::ConvertTo(di32, cases);
+  };
+  const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
+  hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
+  if (hn::AllTrue(d, inside)) [[likely]] {
+    const auto cases = decide_cases<true>(d, L(u), L(dy), L(phi), L(phi), L(dy), nullptr);
+    hn::StoreU(which_lanes(cases.which), di32, which_out + i);
+    const auto unmoved = hn::Zero(du);
+    pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
+    pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
+    pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
+    return;
+  }
 
   L moved_u = u, moved_dy = dy, moved_phi = phi;
   L phi_factor = phi, dy_factor = dy;  // phi dy as their product (detail::factors_of)
   auto offset = hn::Zero(du);
   lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
   lane_mask<D> far_impact{hn::FirstN(d, 0)}, far_contact{hn::FirstN(d, 0)}, far_release{hn::FirstN(d, 0)};
-  if (!hn::AllTrue(d, inside)) [[unlikely]] {
+  {  // a vector with lanes outside the window
     // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
     const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
     free_flight.m = hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
@@ -974,49 +1046,14 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     }
   }
 
-  // (A.21)'s decision, as solve_cases takes it: the pre-test, and the exact
-  // sum for the lanes it leaves undecided near the boundary
-  const auto contact_before = moved_dy > L(0);
-  const L sum = moved_u + moved_dy;
-  const auto [estimate, margin] = detail::estimate_contact(sum, phi_factor, dy_factor);
-  const auto decided = fabs(estimate) > margin;
-  auto stays = estimate > L(0);
-  // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
-  // should it not, solve_stable takes the lane)
-  answerable = answerable & !(subnormal_phi & contact_before & !decided);
-  if (!hn::AllFalse(d, (answerable & contact_before & !decided).m)) [[unlikely]]
-    stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(moved_u, moved_dy, moved_phi));
-
-  // (A.29): s = -u, written now, and every lane's case; the second pass
-  // writes the other lanes' s, the scalar path the lanes it solves
-  free_flight = free_flight | (answerable & !contact_before & (sum <= L(0)));
-  const auto is_contact = answerable & contact_before & stays;
-  const auto is_root = answerable & !free_flight & !is_contact;
-  const auto which = hn::IfThenElse(free_flight.m, hn::Set(d, T(contact_case::free)),
-                                    hn::IfThenElse(contact_before.m,
-                                                   hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
-                                                                  hn::Set(d, T(contact_case::release))),
-                                                   hn::Set(d, T(contact_case::impact))));
-  const hn::Rebind<std::int32_t, D> di32;
-  auto which_lanes = [&](hn::Vec<D> cases) {
-    if constexpr (sizeof(T) == 8) return hn::DemoteTo(di32, cases);
-    else return hn::ConvertTo(di32, cases);
-  };
-  const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
-  const auto is_impact = is_root & !contact_before, is_release = is_root & contact_before;
-  hn::StoreU(hn::Neg(u), d, s_out + i);
-  if (hn::AllTrue(d, inside)) [[likely]] {
-    hn::StoreU(which_lanes(which), di32, which_out + i);
-    pack(d, sorted.impacts, counts.impacts, is_impact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    pack(d, sorted.releases, counts.releases, is_release.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    pack(d, sorted.contacts, counts.contacts, is_contact.m, moved_u.v, moved_dy.v, moved_phi.v, offset, index);
-    return;
-  }
+  outside_window<D> outside{answerable, free_flight, subnormal_phi};
+  const auto cases = decide_cases<false>(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor, &outside);
+  answerable = outside.answerable;
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
                                         hn::IfThenElse(far_contact.m, hn::Set(d, T(contact_case::contact)),
                                                        hn::Set(d, T(contact_case::release))));
   const auto far = far_impact | far_contact | far_release;
-  hn::StoreU(which_lanes(hn::IfThenElse(far.m, far_which, which)), di32, which_out + i);
+  hn::StoreU(which_lanes(hn::IfThenElse(far.m, far_which, cases.which)), di32, which_out + i);
   if (!hn::AllFalse(d, far.m)) [[unlikely]] {
     const auto none = hn::Zero(du);
     if (!hn::AllFalse(d, far_impact.m)) pack(d, sorted.far_impacts, sorted.far_impacts.count, far_impact.m, u, dy, phi, none, index);
@@ -1037,15 +1074,15 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   keep_offsets(sorted.impacts, counts.impacts);
   keep_offsets(sorted.releases, counts.releases);
   keep_offsets(sorted.contacts, counts.contacts);
-  pack_some(sorted.impacts, counts.impacts, is_impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.releases, counts.releases, is_release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.contacts, counts.contacts, is_contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, is_impact}, std::pair{&sorted.releases_of_subnormal_phi, is_release},
-                                std::pair{&sorted.contacts_of_subnormal_phi, is_contact}}) {
+  pack_some(sorted.impacts, counts.impacts, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.releases, counts.releases, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.contacts, counts.contacts, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
+                                std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
     keep_offsets(*pack, pack->count);
     pack_some(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
   }
-  pack_some(sorted.scalar, sorted.scalar.count, !(answerable | free_flight | far), u, dy, phi);
+  pack_some(sorted.scalar, sorted.scalar.count, !(answerable | cases.free_flight | far), u, dy, phi);
 }
 
 // Every lane of a pack to `left`.
