@@ -440,6 +440,7 @@ HWY_INLINE auto lane_order(D d, const std::array<std::uint8_t, lanes_per_vector>
 // is subnormal (double: the first band), and those left to the scalar path.
 template <class T>
 struct sorted_lanes {
+  packed_lanes<T> outside;  // the lanes outside the common window, sorted after the block's others
   packed_lanes<T> impacts, releases, contacts, scalar;
   packed_lanes<T> impacts_of_subnormal_phi, releases_of_subnormal_phi, contacts_of_subnormal_phi;
   packed_lanes<T> far_impacts, far_contacts, far_releases;  // u and dy too far apart for the band, unmoved
@@ -820,16 +821,25 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
   lanes_in.moved = false;
 }
 
+// The case numbers of T's lanes as the int lanes of the `which` array
+template <class D>
+HWY_INLINE auto case_numbers(D d, hn::Vec<D> cases) {
+  const hn::Rebind<std::int32_t, D> di32;
+  if constexpr (sizeof(hn::TFromD<D>) == 8) return hn::DemoteTo(di32, cases);
+  else return hn::ConvertTo(di32, cases);
+}
+
 // Each lane's case, as solve_cases decides (A.21): the pre-test, and the
 // exact sum for the lanes it leaves undecided near the boundary; u, dy, phi
 // as the stable path takes them (moved), phi dy as phi_factor dy_factor.
-// `outside` is null where every lane lies in the common window, as in most
-// vectors: the decision then takes the fewest mask operations. Otherwise it
-// holds what the first pass found of the vector's lanes, and a lane of a
+// With `every_lane_answerable` (every lane inside the common window, as in
+// most vectors) the decision takes the fewest mask operations; otherwise it
+// decides the lanes of `answerable`. `outside` is null inside the window;
+// outside it, it holds what the first pass found of the lanes, and a lane of a
 // subnormal phi that the pre-test leaves undecided leaves `answerable`.
 template <class D>
 struct outside_window {
-  lane_mask<D> answerable, free_flight, subnormal_phi;
+  lane_mask<D> free_flight, subnormal_phi;
 };
 
 template <class D>
@@ -838,9 +848,9 @@ struct lane_cases {
   hn::Vec<D> which;  // the case numbers (contact_case), in T
 };
 
-template <bool every_lane_inside, class D>
+template <bool every_lane_answerable, class D>
 HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi, lanes<D> phi_factor, lanes<D> dy_factor,
-                                      std::type_identity_t<outside_window<D>>* outside) {
+                                      lane_mask<D>& answerable, const std::type_identity_t<outside_window<D>>* outside) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   // (no lane's dy is NaN: the lanes that cannot be answered solve 1 = 1 = 1)
@@ -850,20 +860,20 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   const auto decided = fabs(estimate) > margin;
   auto stays = estimate > L(0);
   auto undecided = contact_before & !decided;
-  if constexpr (!every_lane_inside) {
+  if constexpr (!every_lane_answerable) {
     // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
     // should it not, solve_stable takes the lane)
-    outside->answerable = outside->answerable & !(outside->subnormal_phi & undecided);
-    undecided = outside->answerable & undecided;
+    if (outside) answerable = answerable & !(outside->subnormal_phi & undecided);
+    undecided = answerable & undecided;
   }
   if (!hn::AllFalse(d, undecided.m)) [[unlikely]]
     stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(u, dy, phi));
   lane_cases<D> cases{impact_before & (sum <= L(0)), {}, contact_before & stays, contact_before & !stays, {}};
-  if constexpr (every_lane_inside) {
+  if constexpr (every_lane_answerable) {
     cases.impact = impact_before & !cases.free_flight;
   } else {
-    const auto answerable = outside->answerable;
-    cases.free_flight = outside->free_flight | (answerable & cases.free_flight);
+    cases.free_flight = answerable & cases.free_flight;
+    if (outside) cases.free_flight = outside->free_flight | cases.free_flight;
     cases.impact = answerable & impact_before & !cases.free_flight;
     cases.contact = answerable & cases.contact;
     cases.release = answerable & cases.release & !cases.free_flight;
@@ -876,15 +886,17 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   return cases;
 }
 
-// The first pass over one vector at lane i: free flight answered (s = -u for
-// any valid input, written now); the other lanes that the vectors can take,
-// inside the common window or moved by phi's band (solve_stable's moved stage),
-// have their case decided as solve_stable decides it and are packed by it;
-// the rest are noted for solve_stable.
+// The first pass over lanes outside the common window: a vector of the
+// `outside` pack (`valid`: the lanes of the pack; the others repeat its last
+// lane), or a whole vector of the arrays at lane `first` (else -1). Free
+// flight is answered already; the lanes moved by phi's band into the window
+// (solve_stable's moved stage) and the far lanes have their case decided and
+// are packed by it; the rest are noted for solve_stable. Out of line: the
+// common path's loop stays small.
 template <kernel_mode mode, class D>
-HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
-                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted,
-                            case_counts& counts) {
+HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
+                                      hn::Mask<D> valid, std::ptrdiff_t first, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted,
+                                      case_counts& counts) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -894,41 +906,16 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const hn::RebindToSigned<D> di;
   constexpr int significand_bits = layout::significand_bits;
   constexpr bool rounded_mode = mode != kernel_mode::stable;
-  const auto u = hn::LoadU(d, u_in + i), dy = hn::LoadU(d, dy_in + i), phi = hn::LoadU(d, phi_in + i);
   const auto magnitude = hn::Set(du, U(~layout::sign));
   const auto u_bits = hn::BitCast(du, u), dy_bits = hn::BitCast(du, dy), phi_bits = hn::BitCast(du, phi);
   const auto abs_u = hn::And(u_bits, magnitude), abs_dy = hn::And(dy_bits, magnitude);
 
-  // the common window (detail::common_window_offsets): the OR of the offsets
-  // of |u|, |dy| and phi from the window's lower ends lies below its width
-  // (a negative phi, zeros, subnormals, infinity and NaN fail it)
-  const auto lowest_uv = hn::Set(du, detail::common_window_lowest_uv<T>);
-  const auto window_offsets = hn::Or(hn::Or(hn::Sub(abs_u, lowest_uv), hn::Sub(abs_dy, lowest_uv)),
-                                     hn::Sub(phi_bits, hn::Set(du, detail::common_window_lowest_phi<T>)));
-  const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
-  const hn::Rebind<std::int32_t, D> di32;
-  auto which_lanes = [&](hn::Vec<D> cases) {
-    if constexpr (sizeof(T) == 8) return hn::DemoteTo(di32, cases);
-    else return hn::ConvertTo(di32, cases);
-  };
-  const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
-  hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
-  if (hn::AllTrue(d, inside)) [[likely]] {
-    const auto cases = decide_cases<true>(d, L(u), L(dy), L(phi), L(phi), L(dy), nullptr);
-    hn::StoreU(which_lanes(cases.which), di32, which_out + i);
-    const auto unmoved = hn::Zero(du);
-    pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
-    pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
-    pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
-    return;
-  }
-
   L moved_u = u, moved_dy = dy, moved_phi = phi;
   L phi_factor = phi, dy_factor = dy;  // phi dy as their product (detail::factors_of)
   auto offset = hn::Zero(du);
-  lane_mask<D> answerable{inside}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
+  lane_mask<D> answerable{hn::FirstN(d, 0)}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
   lane_mask<D> far_impact{hn::FirstN(d, 0)}, far_contact{hn::FirstN(d, 0)}, far_release{hn::FirstN(d, 0)};
-  {  // a vector with lanes outside the window
+  {
     // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
     const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
     free_flight.m = hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
@@ -959,7 +946,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     // a subnormal phi in double: every subnormal binade lies in the first band
     // (in float they straddle two: solve_stable takes them)
     constexpr bool subnormal_phi_in_vectors = ((-layout::bias - fields::bands::least_binade) >> fields::bands::band_bits) == 0;
-    const auto finite_uv = hn::AndNot(hn::RebindMask(di, inside), hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy))));
+    const auto finite_uv = hn::RebindMask(di, hn::And(is_finite_nonzero(abs_u), is_finite_nonzero(abs_dy)));
     auto shift = hn::Zero(di);     // the move of u and dy, in binades
     auto fits = hn::FirstN(di, 0);  // the lanes it takes
     if constexpr (mode == kernel_mode::rounded) {
@@ -1016,7 +1003,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
         far_release.m = hn::RebindMask(d, hn::And(hn::And(far, contact_side), hn::Or(product_wins, hn::AndNot(u_positive, u_wins))));
       }
     }
-    answerable.m = hn::Or(inside, hn::RebindMask(d, fits));
+    answerable.m = hn::RebindMask(d, fits);
     offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, shift)));
     // the lanes that cannot be answered solve 1 = 1 = 1: no subnormal operand or result
     const auto one = hn::Set(d, T(1));
@@ -1046,25 +1033,35 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     }
   }
 
-  outside_window<D> outside{answerable, free_flight, subnormal_phi};
-  const auto cases = decide_cases<false>(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor, &outside);
-  answerable = outside.answerable;
+  const outside_window<D> outside{free_flight, subnormal_phi};
+  const auto cases = decide_cases<false>(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor, answerable, &outside);
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
                                         hn::IfThenElse(far_contact.m, hn::Set(d, T(contact_case::contact)),
                                                        hn::Set(d, T(contact_case::release))));
   const auto far = far_impact | far_contact | far_release;
-  hn::StoreU(which_lanes(hn::IfThenElse(far.m, far_which, cases.which)), di32, which_out + i);
-  if (!hn::AllFalse(d, far.m)) [[unlikely]] {
-    const auto none = hn::Zero(du);
-    if (!hn::AllFalse(d, far_impact.m)) pack(d, sorted.far_impacts, sorted.far_impacts.count, far_impact.m, u, dy, phi, none, index);
-    if (!hn::AllFalse(d, far_contact.m)) pack(d, sorted.far_contacts, sorted.far_contacts.count, far_contact.m, u, dy, phi, none, index);
-    if (!hn::AllFalse(d, far_release.m)) pack(d, sorted.far_releases, sorted.far_releases.count, far_release.m, u, dy, phi, none, index);
+  const hn::Rebind<std::int32_t, D> di32;
+  const auto which = case_numbers(d, hn::IfThenElse(far.m, far_which, cases.which));
+  if (first >= 0) {
+    hn::StoreU(which, di32, which_out + first);
+  } else {  // (the repeated last lane writes what it writes: the same case to the same place)
+    const auto index32 = [&] {  // (an index is below 2^30: its low half)
+      if constexpr (sizeof(T) == 8) return hn::BitCast(di32, hn::TruncateTo(hn::Rebind<std::uint32_t, D>(), hn::BitCast(du, index)));
+      else return index;
+    }();
+    hn::ScatterIndex(which, di32, which_out, index32);
   }
   // (outside the window most packs take no lane of a vector: a test costs less than a pack)
   auto pack_some = [&](packed_lanes<T>& into, std::ptrdiff_t& count, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
-                       hn::Vec<D> phi) {
-    if (!hn::AllFalse(d, lanes_of.m)) pack(d, into, count, lanes_of.m, u, dy, phi, offset, index);
+                       hn::Vec<D> phi, hn::Vec<decltype(du)> offset) {
+    const auto taken = hn::And(lanes_of.m, valid);
+    if (!hn::AllFalse(d, taken)) pack(d, into, count, taken, u, dy, phi, offset, index);
   };
+  if (!hn::AllFalse(d, far.m)) [[unlikely]] {
+    const auto none = hn::Zero(du);
+    pack_some(sorted.far_impacts, sorted.far_impacts.count, far_impact, u, dy, phi, none);
+    pack_some(sorted.far_contacts, sorted.far_contacts.count, far_contact, u, dy, phi, none);
+    pack_some(sorted.far_releases, sorted.far_releases.count, far_release, u, dy, phi, none);
+  }
   // the packs that may now take a moved lane keep offsets from here on (0 for
   // the lanes they hold)
   auto keep_offsets = [](packed_lanes<T>& pack, std::ptrdiff_t count) {
@@ -1074,15 +1071,84 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   keep_offsets(sorted.impacts, counts.impacts);
   keep_offsets(sorted.releases, counts.releases);
   keep_offsets(sorted.contacts, counts.contacts);
-  pack_some(sorted.impacts, counts.impacts, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.releases, counts.releases, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
-  pack_some(sorted.contacts, counts.contacts, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+  pack_some(sorted.impacts, counts.impacts, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  pack_some(sorted.releases, counts.releases, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  pack_some(sorted.contacts, counts.contacts, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
                                 std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
     keep_offsets(*pack, pack->count);
-    pack_some(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v);
+    pack_some(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   }
-  pack_some(sorted.scalar, sorted.scalar.count, !(answerable | cases.free_flight | far), u, dy, phi);
+  pack_some(sorted.scalar, sorted.scalar.count, !(answerable | cases.free_flight | far), u, dy, phi, offset);
+}
+
+// The first pass over one vector at lane i: free flight answered (s = -u for
+// any valid input, written now); the lanes inside the common window have
+// their case decided as solve_stable decides it and are packed by it; the
+// others go to the `outside` pack, which sort_outside_vector sorts once the
+// block's vectors are through (a vector that mixes both would otherwise take
+// the longer path for all its lanes).
+template <kernel_mode mode, class D>
+HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
+                            hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted,
+                            case_counts& counts) {
+  using T = hn::TFromD<D>;
+  using L = lanes<D>;
+  using layout = detail::binary_layout<T>;
+  using U = typename layout::bits;
+  const hn::RebindToUnsigned<D> du;
+  const hn::RebindToSigned<D> di;
+  const auto u = hn::LoadU(d, u_in + i), dy = hn::LoadU(d, dy_in + i), phi = hn::LoadU(d, phi_in + i);
+  const auto magnitude = hn::Set(du, U(~layout::sign));
+  const auto abs_u = hn::And(hn::BitCast(du, u), magnitude), abs_dy = hn::And(hn::BitCast(du, dy), magnitude);
+
+  // the common window (detail::common_window_offsets): the OR of the offsets
+  // of |u|, |dy| and phi from the window's lower ends lies below its width
+  // (a negative phi, zeros, subnormals, infinity and NaN fail it)
+  const auto lowest_uv = hn::Set(du, detail::common_window_lowest_uv<T>);
+  const auto window_offsets = hn::Or(hn::Or(hn::Sub(abs_u, lowest_uv), hn::Sub(abs_dy, lowest_uv)),
+                                     hn::Sub(hn::BitCast(du, phi), hn::Set(du, detail::common_window_lowest_phi<T>)));
+  const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
+  const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
+  hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
+  auto sort_inside = [&](auto every_lane_inside) {
+    lane_mask<D> answerable{inside};
+    const auto cases = decide_cases<every_lane_inside()>(d, L(u), L(dy), L(phi), L(phi), L(dy), answerable, nullptr);
+    hn::StoreU(case_numbers(d, cases.which), hn::Rebind<std::int32_t, D>(), which_out + i);  // (outside: sort_outside_vector's)
+    const auto unmoved = hn::Zero(du);
+    pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
+    pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
+    pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
+  };
+  if (hn::AllTrue(d, inside)) [[likely]] {
+    sort_inside(std::true_type{});
+  } else if (hn::AllFalse(d, inside)) {  // (no lane to sort first: sorted at once, not copied)
+    sort_outside_vector<mode>(d, u, dy, phi, index, hn::Not(inside), i, which_out, sorted, counts);
+  } else {
+    sort_inside(std::false_type{});
+    pack(d, sorted.outside, sorted.outside.count, hn::Not(inside), u, dy, phi, hn::Zero(du), index);
+  }
+}
+
+// The block's `outside` pack through sort_outside_vector, in whole vectors:
+// the last one's unused lanes repeat its last lane.
+template <kernel_mode mode, class D>
+HWY_INLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
+  auto& outside = sorted.outside;
+  const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
+  if (outside.count == 0) return;
+  for (std::ptrdiff_t k = outside.count; k < outside.count + width; ++k) {
+    outside.u[k] = outside.u[outside.count - 1];
+    outside.dy[k] = outside.dy[outside.count - 1];
+    outside.phi[k] = outside.phi[outside.count - 1];
+    outside.index[k] = outside.index[outside.count - 1];
+  }
+  const hn::RebindToSigned<D> di;
+  for (std::ptrdiff_t k = 0; k < outside.count; k += width)
+    sort_outside_vector<mode>(d, hn::Load(d, outside.u + k), hn::Load(d, outside.dy + k), hn::Load(d, outside.phi + k),
+                              hn::Load(di, outside.index + k), hn::FirstN(d, static_cast<std::size_t>(outside.count - k)), -1, which_out,
+                              sorted, counts);
+  outside.count = 0;
 }
 
 // Every lane of a pack to `left`.
@@ -1134,6 +1200,7 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
       }
       sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, counts);
     }
+    sort_outside_lanes<mode>(d, which, sorted, counts);
     sorted.impacts.count = std::exchange(counts.impacts, 0);
     sorted.releases.count = std::exchange(counts.releases, 0);
     sorted.contacts.count = std::exchange(counts.contacts, 0);
