@@ -821,6 +821,15 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
   lanes_in.moved = false;
 }
 
+// (A.29) for any valid input: dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf)
+template <class D>
+HWY_INLINE hn::Mask<D> free_flight_anywhere(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi) {
+  const auto infinity = hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity());
+  return hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
+                         hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
+                 hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)));
+}
+
 // The case numbers of T's lanes as the int lanes of the `which` array
 template <class D>
 HWY_INLINE auto case_numbers(D d, hn::Vec<D> cases) {
@@ -886,17 +895,15 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   return cases;
 }
 
-// The first pass over lanes outside the common window: a vector of the
-// `outside` pack (`valid`: the lanes of the pack; the others repeat its last
-// lane), or a whole vector of the arrays at lane `first` (else -1). Free
-// flight is answered already; the lanes moved by phi's band into the window
+// The first pass over lanes outside the common window and not in free
+// flight, a vector of the `outside` pack (`valid`: the lanes of the pack; the
+// others repeat its last lane): the lanes moved by phi's band into the window
 // (solve_stable's moved stage) and the far lanes have their case decided and
 // are packed by it; the rest are noted for solve_stable. Out of line: the
 // common path's loop stays small.
 template <kernel_mode mode, class D>
 HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
-                                      hn::Mask<D> valid, std::ptrdiff_t first, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted,
-                                      case_counts& counts) {
+                                      hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -913,14 +920,9 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
   L moved_u = u, moved_dy = dy, moved_phi = phi;
   L phi_factor = phi, dy_factor = dy;  // phi dy as their product (detail::factors_of)
   auto offset = hn::Zero(du);
-  lane_mask<D> answerable{hn::FirstN(d, 0)}, free_flight{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
+  lane_mask<D> answerable{hn::FirstN(d, 0)}, subnormal_phi{hn::FirstN(d, 0)};
   lane_mask<D> far_impact{hn::FirstN(d, 0)}, far_contact{hn::FirstN(d, 0)}, far_release{hn::FirstN(d, 0)};
   {
-    // free flight for any valid input (dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf))
-    const auto infinity = hn::Set(d, std::numeric_limits<T>::infinity());
-    free_flight.m = hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
-                                    hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
-                            hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)));
     // phi's band: the shift (in binades) that moves the larger of |u|, |dy| to
     // the band's top, taken where u and dy are finite and non-zero, phi in a
     // band, and the smaller then at or above the band's least binade for its case
@@ -988,7 +990,7 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
       // stay with solve_stable
       static_assert(detail::plain_window<T> < fields::bands::last_phi_binade);
       const auto beyond_bands = hn::RebindMask(di, hn::And(hn::Ge(phi, hn::Set(d, fields::bands::end)), hn::IsFinite(phi)));
-      const auto far = hn::AndNot(hn::RebindMask(di, free_flight.m), hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands)));
+      const auto far = hn::Or(hn::And(normal_in_band, too_far), hn::And(finite_uv, beyond_bands));
       if (!hn::AllFalse(di, far)) [[unlikely]] {
         const auto phi_field = read_normal(d, hn::And(phi_bits, magnitude)).field;
         const auto product_field = hn::Sub(hn::Add(phi_field, dy_field), hn::Set(di, layout::bias));  // phi dy in [2^field, 2^(field + 2))
@@ -1033,23 +1035,19 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
     }
   }
 
-  const outside_window<D> outside{free_flight, subnormal_phi};
+  const outside_window<D> outside{lane_mask<D>{hn::FirstN(d, 0)}, subnormal_phi};
   const auto cases = decide_cases<false>(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor, answerable, &outside);
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
                                         hn::IfThenElse(far_contact.m, hn::Set(d, T(contact_case::contact)),
                                                        hn::Set(d, T(contact_case::release))));
   const auto far = far_impact | far_contact | far_release;
   const hn::Rebind<std::int32_t, D> di32;
-  const auto which = case_numbers(d, hn::IfThenElse(far.m, far_which, cases.which));
-  if (first >= 0) {
-    hn::StoreU(which, di32, which_out + first);
-  } else {  // (the repeated last lane writes what it writes: the same case to the same place)
-    const auto index32 = [&] {  // (an index is below 2^30: its low half)
-      if constexpr (sizeof(T) == 8) return hn::BitCast(di32, hn::TruncateTo(hn::Rebind<std::uint32_t, D>(), hn::BitCast(du, index)));
-      else return index;
-    }();
-    hn::ScatterIndex(which, di32, which_out, index32);
-  }
+  // (the repeated last lane writes what it writes: the same case to the same place)
+  const auto index32 = [&] {  // (an index is below 2^30: its low half)
+    if constexpr (sizeof(T) == 8) return hn::BitCast(di32, hn::TruncateTo(hn::Rebind<std::uint32_t, D>(), hn::BitCast(du, index)));
+    else return index;
+  }();
+  hn::ScatterIndex(case_numbers(d, hn::IfThenElse(far.m, far_which, cases.which)), di32, which_out, index32);
   // The valid lanes of `lanes_of` to a pack: at once for the cases' packs,
   // where a test would branch by the data and mispredict (extreme's vectors
   // ran 10 to 13% slower with it), and behind a test for the rare packs.
@@ -1092,7 +1090,7 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
 // their case decided as solve_stable decides it and are packed by it; the
 // others go to the `outside` pack, which sort_outside_vector sorts once the
 // block's vectors are through (a vector that mixes both would otherwise take
-// the longer path for all its lanes).
+// the longer path for all its lanes, free flight's too).
 template <kernel_mode mode, class D>
 HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>* dy_in, const hn::TFromD<D>* phi_in,
                             hn::TFromD<D>* s_out, int* which_out, std::ptrdiff_t i, sorted_lanes<hn::TFromD<D>>& sorted,
@@ -1116,23 +1114,29 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
   hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
-  auto sort_inside = [&](auto every_lane_inside) {
+  // (the other lanes' case numbers: sort_outside_vector's)
+  const hn::Rebind<std::int32_t, D> di32;
+  auto sort_inside = [&](auto every_lane_inside, const outside_window<D>* outside) {
     lane_mask<D> answerable{inside};
-    const auto cases = decide_cases<every_lane_inside()>(d, L(u), L(dy), L(phi), L(phi), L(dy), answerable, nullptr);
-    hn::StoreU(case_numbers(d, cases.which), hn::Rebind<std::int32_t, D>(), which_out + i);  // (outside: sort_outside_vector's)
+    const auto cases = decide_cases<every_lane_inside()>(d, L(u), L(dy), L(phi), L(phi), L(dy), answerable, outside);
+    hn::StoreU(case_numbers(d, cases.which), di32, which_out + i);
     const auto unmoved = hn::Zero(du);
     pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
     pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
     pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
   };
   if (hn::AllTrue(d, inside)) [[likely]] {
-    sort_inside(std::true_type{});
-  } else if (hn::AllFalse(d, inside)) {  // (no lane to sort first: sorted at once, not copied)
-    sort_outside_vector<mode>(d, u, dy, phi, index, hn::Not(inside), i, which_out, sorted, counts);
-  } else {
-    sort_inside(std::false_type{});
-    pack(d, sorted.outside, sorted.outside.count, hn::Not(inside), u, dy, phi, hn::Zero(du), index);
+    sort_inside(std::true_type{}, nullptr);
+    return;
   }
+  const auto free_flight = free_flight_anywhere(d, u, dy, phi);
+  if (hn::AllFalse(d, inside)) {
+    hn::StoreU(case_numbers(d, hn::IfThenElseZero(free_flight, hn::Set(d, T(contact_case::free)))), di32, which_out + i);
+  } else {
+    const outside_window<D> outside{lane_mask<D>{free_flight}, lane_mask<D>{hn::FirstN(d, 0)}};
+    sort_inside(std::false_type{}, &outside);
+  }
+  pack(d, sorted.outside, sorted.outside.count, hn::Not(hn::Or(inside, free_flight)), u, dy, phi, hn::Zero(du), index);
 }
 
 // The block's `outside` pack through sort_outside_vector, in whole vectors:
@@ -1151,7 +1155,7 @@ HWY_INLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<
   const hn::RebindToSigned<D> di;
   for (std::ptrdiff_t k = 0; k < outside.count; k += width)
     sort_outside_vector<mode>(d, hn::Load(d, outside.u + k), hn::Load(d, outside.dy + k), hn::Load(d, outside.phi + k),
-                              hn::Load(di, outside.index + k), hn::FirstN(d, static_cast<std::size_t>(outside.count - k)), -1, which_out,
+                              hn::Load(di, outside.index + k), hn::FirstN(d, static_cast<std::size_t>(outside.count - k)), which_out,
                               sorted, counts);
   outside.count = 0;
 }
