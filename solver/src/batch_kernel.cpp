@@ -411,29 +411,34 @@ struct packed_lanes {
 // The lane orders that bring a mask's lanes first, by the mask's bits: the
 // compaction of vectors of up to 8 lanes (Highway's own compress copies a
 // table onto the stack at every call for them; 16 lanes of float on AVX-512
-// have an instruction).
-template <std::size_t lanes_per_vector>
+// have an instruction). Each order moves the lanes' 32-bit parts (two for a
+// double), which every target permutes in one instruction: AVX2 has no
+// permute of 64-bit lanes by a vector, and Highway would widen the order there.
+template <std::size_t lanes_per_vector, std::size_t parts_per_lane>
 inline constexpr auto compaction_orders = [] {
-  std::array<std::array<std::uint8_t, lanes_per_vector>, (std::size_t(1) << lanes_per_vector)> orders{};
+  constexpr std::size_t parts = lanes_per_vector * parts_per_lane;
+  std::array<std::array<std::uint8_t, parts>, (std::size_t(1) << lanes_per_vector)> orders{};
   for (std::size_t bits = 0; bits < orders.size(); ++bits) {
     std::size_t k = 0;
+    auto append = [&](std::size_t j) {
+      for (std::size_t part = 0; part < parts_per_lane; ++part) orders[bits][k++] = std::uint8_t(j * parts_per_lane + part);
+    };
     for (std::size_t j = 0; j < lanes_per_vector; ++j)
-      if ((bits >> j) & 1) orders[bits][k++] = std::uint8_t(j);
+      if ((bits >> j) & 1) append(j);
     for (std::size_t j = 0; j < lanes_per_vector; ++j)
-      if (!((bits >> j) & 1)) orders[bits][k++] = std::uint8_t(j);
+      if (!((bits >> j) & 1)) append(j);
   }
   return orders;
 }();
 
-// A row of those tables as the indices of a TableLookupLanes.
-template <class D, std::size_t lanes_per_vector>
-HWY_INLINE auto lane_order(D d, const std::array<std::uint8_t, lanes_per_vector>& row) {
-  const hn::RebindToSigned<D> di;
-  const hn::Rebind<std::uint8_t, decltype(di)> d8;
-  const hn::Rebind<std::int32_t, decltype(di)> d32;
-  const auto order32 = hn::PromoteTo(d32, hn::LoadU(d8, row.data()));
-  if constexpr (sizeof(hn::TFromD<D>) == 8) return hn::IndicesFromVec(d, hn::PromoteTo(di, order32));
-  else return hn::IndicesFromVec(d, order32);
+// The 32-bit parts of D's vectors, and a row of those tables as their permutation.
+template <class D>
+using parts_of = hn::Repartition<std::uint32_t, D>;
+
+template <class D, std::size_t parts>
+HWY_INLINE auto lane_order(D, const std::array<std::uint8_t, parts>& row) {
+  const parts_of<D> d32;
+  return hn::IndicesFromVec(d32, hn::PromoteTo(d32, hn::LoadU(hn::Rebind<std::uint8_t, decltype(d32)>(), row.data())));
 }
 
 // A block's lanes as the first pass sorts them: by case, and by whether phi
@@ -464,8 +469,11 @@ HWY_INLINE void pack(D d, packed_lanes<hn::TFromD<D>>& into, std::ptrdiff_t& cou
   if constexpr (lanes_per_vector <= 8 && !HWY_HAVE_SCALABLE) {
     std::uint8_t bits[8] = {};
     hn::StoreMaskBits(d, lanes_of, bits);
-    const auto order = lane_order(d, compaction_orders<lanes_per_vector>[bits[0]]);
-    auto first = [&](auto v) { return hn::BitCast(hn::DFromV<decltype(v)>(), hn::TableLookupLanes(hn::BitCast(d, v), order)); };
+    constexpr std::size_t parts_per_lane = sizeof(hn::TFromD<D>) / 4;
+    const auto order = lane_order(d, compaction_orders<lanes_per_vector, parts_per_lane>[bits[0]]);
+    auto first = [&](auto v) {
+      return hn::BitCast(hn::DFromV<decltype(v)>(), hn::TableLookupLanes(hn::BitCast(parts_of<D>(), v), order));
+    };
     hn::StoreU(first(u), d, into.u + at);
     hn::StoreU(first(dy), d, into.dy + at);
     hn::StoreU(first(phi), d, into.phi + at);
