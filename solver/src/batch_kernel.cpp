@@ -9,7 +9,8 @@
 // Two passes over each block of lanes. The first decides each lane's case and
 // answers free flight (any valid input); it packs the other lanes by case, as
 // they are inside the common window, or moved by a power of two into phi's
-// band box (the moved stage of solve_stable). The second solves each pack in
+// band box (the moved stage of solve_stable), those outside the window once
+// the block's others are packed. The second solves each pack in
 // whole vectors by its case's formula alone and moves s back. The rest (phi in no band, a
 // subnormal phi in float, u and dy too far apart, zero or subnormal u or dy,
 // an s that underflows or overflows once moved back, invalid input) go to
