@@ -1058,8 +1058,8 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
   }();
   hn::ScatterIndex(case_numbers(d, hn::IfThenElse(far.m, far_which, cases.which)), di32, which_out, index32);
   // The valid lanes of `lanes_of` to a pack: at once for the cases' packs,
-  // where a test would branch by the data and mispredict (extreme's vectors
-  // ran 10 to 13% slower with it), and behind a test for the rare packs.
+  // where a test would branch by the data and mispredict more often than a
+  // pack costs, and behind a test for the rare packs.
   auto pack_valid = [&](packed_lanes<T>& into, std::ptrdiff_t& count, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
                         hn::Vec<D> phi, hn::Vec<decltype(du)> offset) {
     pack(d, into, count, hn::And(lanes_of.m, valid), u, dy, phi, offset, index);
