@@ -852,9 +852,9 @@ HWY_INLINE auto case_numbers(D d, hn::Vec<D> cases) {
 // as the stable path takes them (moved), phi dy as phi_factor dy_factor.
 // With `every_lane_answerable` (every lane inside the common window, as in
 // most vectors) the decision takes the fewest mask operations; otherwise it
-// decides the lanes of `answerable`. `outside` is null inside the window;
-// outside it, it holds what the first pass found of the lanes, and a lane of a
-// subnormal phi that the pre-test leaves undecided leaves `answerable`.
+// decides the lanes of `answerable`, and `outside` holds what the first pass
+// found of the vector's lanes (free flight found before; a lane of a
+// subnormal phi that the pre-test leaves undecided leaves `answerable`).
 template <class D>
 struct outside_window {
   lane_mask<D> free_flight, subnormal_phi;
@@ -881,7 +881,7 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   if constexpr (!every_lane_answerable) {
     // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
     // should it not, solve_stable takes the lane)
-    if (outside) answerable = answerable & !(outside->subnormal_phi & undecided);
+    answerable = answerable & !(outside->subnormal_phi & undecided);
     undecided = answerable & undecided;
   }
   if (!hn::AllFalse(d, undecided.m)) [[unlikely]]
@@ -891,7 +891,7 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
     cases.impact = impact_before & !cases.free_flight;
   } else {
     cases.free_flight = answerable & cases.free_flight;
-    if (outside) cases.free_flight = outside->free_flight | cases.free_flight;
+    cases.free_flight = outside->free_flight | cases.free_flight;
     cases.impact = answerable & impact_before & !cases.free_flight;
     cases.contact = answerable & cases.contact;
     cases.release = answerable & cases.release & !cases.free_flight;
