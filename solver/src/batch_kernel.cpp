@@ -81,6 +81,8 @@ HWY_INLINE lane_mask<D> operator>(lanes<D> a, lanes<D> b) { return {hn::Gt(a.v, 
 template <class D>
 HWY_INLINE lane_mask<D> operator<=(lanes<D> a, lanes<D> b) { return {hn::Le(a.v, b.v)}; }
 template <class D>
+HWY_INLINE lane_mask<D> operator>=(lanes<D> a, lanes<D> b) { return {hn::Ge(a.v, b.v)}; }
+template <class D>
 HWY_INLINE lane_mask<D> operator!=(lanes<D> a, lanes<D> b) { return {hn::Ne(a.v, b.v)}; }
 
 // The operations stable.hpp calls unqualified (found here by argument-dependent lookup).
@@ -830,15 +832,6 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
   lanes_in.moved = false;
 }
 
-// (A.29) for any valid input: dy <= 0, u <= -dy, u and dy finite, phi in [+0, inf)
-template <class D>
-HWY_INLINE hn::Mask<D> free_flight_anywhere(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi) {
-  const auto infinity = hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity());
-  return hn::And(hn::And(hn::And(hn::Le(dy, hn::Zero(d)), hn::Le(u, hn::Neg(dy))),
-                         hn::And(hn::Gt(dy, hn::Neg(infinity)), hn::Gt(u, hn::Neg(infinity)))),
-                 hn::And(hn::Ge(phi, hn::Zero(d)), hn::Lt(phi, infinity)));
-}
-
 // The case numbers of T's lanes as the int lanes of the `which` array
 template <class D>
 HWY_INLINE auto case_numbers(D d, hn::Vec<D> cases) {
@@ -890,8 +883,7 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   if constexpr (every_lane_answerable) {
     cases.impact = impact_before & !cases.free_flight;
   } else {
-    cases.free_flight = answerable & cases.free_flight;
-    cases.free_flight = outside->free_flight | cases.free_flight;
+    cases.free_flight = outside->free_flight | (answerable & cases.free_flight);
     cases.impact = answerable & impact_before & !cases.free_flight;
     cases.contact = answerable & cases.contact;
     cases.release = answerable & cases.release & !cases.free_flight;
@@ -1138,7 +1130,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     sort_inside(std::true_type{}, nullptr);
     return;
   }
-  const auto free_flight = free_flight_anywhere(d, u, dy, phi);
+  const auto free_flight = detail::free_flight_anywhere(L(u), L(dy), L(phi)).m;
   if (hn::AllFalse(d, inside)) {
     hn::StoreU(case_numbers(d, hn::IfThenElseZero(free_flight, hn::Set(d, T(contact_case::free)))), di32, which_out + i);
   } else {

@@ -431,6 +431,15 @@ solution<T> free_flight(const T& u) {
   return {-u, contact_case::free};
 }
 
+// Free flight for any valid input: dy <= 0, u <= -dy, u and dy finite, phi in
+// [+0, inf). For T (&, not &&: no branch) and for the batch kernel's
+// lanes (a mask) alike.
+template <class Num>
+[[gnu::always_inline]] inline auto free_flight_anywhere(const Num& u, const Num& dy, const Num& phi) {
+  const Num zero(0), infinity(std::numeric_limits<scalar_of_t<Num>>::infinity());
+  return (dy <= zero) & (u <= -dy) & (dy > -infinity) & (u > -infinity) & (phi >= zero) & (phi < infinity);
+}
+
 // Each case's answer: its formula's s, clamped onto the case's side of dy.
 template <class T>
 solution<T> impact_answer(T s, const T& u, const T& dy) {
@@ -711,9 +720,7 @@ template <class T>
 [[gnu::noinline, gnu::flatten]] solution<T> moved(T u, T dy, T phi) {
   using layout = binary_layout<T>;
   using bits = typename layout::bits;
-  constexpr T infinity = std::numeric_limits<T>::infinity();
-  if ((dy <= 0) & (u <= -dy) & (dy > -infinity) & (u > -infinity) & (phi >= 0) & (phi < infinity))
-    return free_flight(u);
+  if (free_flight_anywhere(u, dy, phi)) return free_flight(u);
   if (!(phi > 0) || !(phi < phi_bands<T>::end)) return outside_bands(u, dy, phi);
   const bits u_magnitude = std::bit_cast<bits>(u) & ~layout::sign, dy_magnitude = std::bit_cast<bits>(dy) & ~layout::sign;
   if (!(layout::is_normal(u_magnitude) && layout::is_normal(dy_magnitude))) [[unlikely]]
