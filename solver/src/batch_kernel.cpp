@@ -369,10 +369,11 @@ struct scaled_lanes {
   }
 };
 
-// phi_bands<T>' table in units of the exponent field, for the lanes' gathers:
-// per band, the field of 2^(top - 1) (where the larger of |u|, |dy| moves) and
-// the least fields the smaller may then have, for contact and release
-// (lowest) and for an impact (impact_lowest).
+// phi_bands<T>' table in units of the exponent field, one entry per band for
+// the lanes' gather: the field of 2^(top - 1) (where the larger of |u|, |dy|
+// moves) and the least fields the smaller may then have, for contact and
+// release (lowest) and for an impact (impact_lowest), each a signed bit field
+// of a third of the entry, so that one gather reads all three.
 template <class T>
 struct band_fields {
   using bands = detail::phi_bands<T>;
@@ -382,15 +383,30 @@ struct band_fields {
   static constexpr field index_offset = -layout::bias - bands::least_binade;
   static_assert(((2 * std::numeric_limits<T>::max_exponent - 1 + index_offset) >> bands::band_bits) < bands::count,
                 "every |phi|, infinity and NaN included, indexes the table");
-  template <int bands::band::*member, int offset>
-  static constexpr std::array<field, bands::count> column = [] {
-    std::array<field, bands::count> fields{};
-    for (int j = 0; j < bands::count; ++j) fields[j] = field(layout::bias + bands::table[j].*member + offset);
-    return fields;
+  static constexpr int width = 8 * sizeof(field) / 3;
+  enum part { top_part, lowest_part, impact_lowest_part };
+  static constexpr std::array<field, bands::count> table = [] {
+    using entry = typename layout::bits;
+    std::array<field, bands::count> entries{};
+    for (int j = 0; j < bands::count; ++j) {
+      entry bits = 0;
+      auto put = [&](int part, int value) {
+        if (value < -(1 << (width - 1)) || value >= (1 << (width - 1))) throw "a band's field exceeds its part of the entry";
+        bits |= (entry(value) & ((entry(1) << width) - 1)) << (part * width);
+      };
+      put(top_part, layout::bias + bands::table[j].top - 1);
+      put(lowest_part, layout::bias + bands::table[j].lowest);
+      put(impact_lowest_part, layout::bias + bands::table[j].impact_lowest);
+      entries[j] = std::bit_cast<field>(bits);
+    }
+    return entries;
   }();
-  static constexpr const auto& top = column<&bands::band::top, -1>;
-  static constexpr const auto& lowest = column<&bands::band::lowest, 0>;
-  static constexpr const auto& impact_lowest = column<&bands::band::impact_lowest, 0>;
+  // one part of gathered entries, sign-extended
+  template <part which, class V>
+  static HWY_INLINE V read(V entries) {
+    constexpr int bits = 8 * sizeof(field);
+    return hn::ShiftRight<bits - width>(hn::ShiftLeft<bits - width * (which + 1)>(entries));
+  }
 };
 
 // Lanes packed by case: the impacts, the releases and the contacts, so that
@@ -973,10 +989,10 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
     } else {
       const auto band = hn::ShiftRight<fields::bands::band_bits>(
           hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
-      const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))),
-                                        hn::GatherIndex(di, fields::impact_lowest.data(), band),
-                                        hn::GatherIndex(di, fields::lowest.data(), band));
-      shift = hn::Sub(hn::GatherIndex(di, fields::top.data(), band), larger);
+      const auto entries = hn::GatherIndex(di, fields::table.data(), band);
+      const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))), fields::template read<fields::impact_lowest_part>(entries),
+                                        fields::template read<fields::lowest_part>(entries));
+      shift = hn::Sub(fields::template read<fields::top_part>(entries), larger);
       const auto phi_least = hn::Set(du, subnormal_phi_in_vectors ? U(1) : layout::least_normal);
       const auto phi_in_a_band =
           unsigned_less(du, hn::Sub(phi_bits, phi_least), hn::Sub(hn::Set(du, std::bit_cast<U>(fields::bands::end)), phi_least));
