@@ -1067,7 +1067,8 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
   hn::ScatterIndex(case_numbers(d, hn::IfThenElse(far.m, far_which, cases.which)), di32, which_out, index32);
   // The valid lanes of `lanes_of` to a pack: at once for the cases' packs,
   // where a test would branch by the data and mispredict more often than a
-  // pack costs, and behind a test for the rare packs.
+  // pack costs; the rare packs behind a test, one for the three packs of a
+  // subnormal phi (which of them a vector fills is as unpredictable).
   auto pack_valid = [&](packed_lanes<T>& into, std::ptrdiff_t& count, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
                         hn::Vec<D> phi, hn::Vec<decltype(du)> offset) {
     pack(d, into, count, hn::And(lanes_of.m, valid), u, dy, phi, offset, index);
@@ -1094,10 +1095,12 @@ HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<
   pack_valid(sorted.impacts, counts.impacts, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   pack_valid(sorted.releases, counts.releases, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   pack_valid(sorted.contacts, counts.contacts, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
-  for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
-                                std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
-    keep_offsets(*pack, pack->count);
-    pack_if_any(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  if (!hn::AllFalse(d, hn::And(subnormal_phi.m, valid))) {
+    for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
+                                  std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
+      keep_offsets(*pack, pack->count);
+      pack_valid(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+    }
   }
   pack_if_any(sorted.scalar, sorted.scalar.count, !(answerable | cases.free_flight | far), u, dy, phi, offset);
 }
