@@ -1219,15 +1219,21 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
         continue;
       }
     }
-    for (; i < end; i += width) {
-      if (streamed && i + prefetch_distance < n) [[likely]] {
-        hwy::Prefetch(u + i + prefetch_distance);
-        hwy::Prefetch(dy + i + prefetch_distance);
-        hwy::Prefetch(phi + i + prefetch_distance);
-        __builtin_prefetch(s + i + prefetch_distance, 1);
-        __builtin_prefetch(which + i + prefetch_distance, 1);
+    {
+      // (a copy whose address never leaves solve, so that the counts stay in
+      // registers: a store to a pack's indices might otherwise change them)
+      case_counts first_pass_counts = counts;
+      for (; i < end; i += width) {
+        if (streamed && i + prefetch_distance < n) [[likely]] {
+          hwy::Prefetch(u + i + prefetch_distance);
+          hwy::Prefetch(dy + i + prefetch_distance);
+          hwy::Prefetch(phi + i + prefetch_distance);
+          __builtin_prefetch(s + i + prefetch_distance, 1);
+          __builtin_prefetch(which + i + prefetch_distance, 1);
+        }
+        sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, first_pass_counts);
       }
-      sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, counts);
+      counts = first_pass_counts;
     }
     sort_outside_lanes<mode>(d, which, sorted, counts);
     sorted.impacts.count = std::exchange(counts.impacts, 0);
