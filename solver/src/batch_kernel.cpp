@@ -916,10 +916,9 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
 // flight, a vector of the `outside` pack (`valid`: the lanes of the pack; the
 // others repeat its last lane): the lanes moved by phi's band into the window
 // (solve_stable's moved stage) and the far lanes have their case decided and
-// are packed by it; the rest are noted for solve_stable. Out of line: the
-// common path's loop stays small.
+// are packed by it; the rest are noted for solve_stable.
 template <kernel_mode mode, class D>
-HWY_NOINLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
+HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
                                       hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
@@ -1160,9 +1159,11 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
 }
 
 // The block's `outside` pack through sort_outside_vector, in whole vectors:
-// the last one's unused lanes repeat its last lane.
+// the last one's unused lanes repeat its last lane. Out of line, with its
+// loop: the common path's loop stays small, and the outside lanes' constants
+// and saved registers are set up once a block, not once a vector.
 template <kernel_mode mode, class D>
-HWY_INLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
+HWY_NOINLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
   auto& outside = sorted.outside;
   const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
   if (outside.count == 0) return;
