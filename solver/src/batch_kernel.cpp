@@ -951,10 +951,13 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
       return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
     };
     // subnormal u and dy read as normal values (read_normal), on the vectors
-    // that hold one (the rounded mode moves normal u and dy only: it reads none)
+    // that hold one (the rounded mode moves normal u and dy only: it reads
+    // none). The test may also take a vector for a zero (or, through Min, a
+    // NaN): such a lane is not finite_uv, and what it reads does not matter.
     normal_reading<D> u_read{hn::BitCast(d, abs_u), field_of(abs_u)}, dy_read{hn::BitCast(d, abs_dy), field_of(abs_dy)};
-    const bool subnormal_uv = !rounded_mode && !hn::AllTrue(du, unsigned_less(du, hn::Sub(hn::Min(abs_u, abs_dy), least_normal),
-                                                              hn::Set(du, U((layout::exponent_field << significand_bits) - layout::least_normal))));
+    const bool subnormal_uv =
+        !rounded_mode && !hn::AllFalse(d, hn::Lt(hn::Min(hn::BitCast(d, abs_u), hn::BitCast(d, abs_dy)),
+                                                 hn::Set(d, std::numeric_limits<T>::min())));
     if (subnormal_uv) [[unlikely]] {
       u_read = read_normal(d, abs_u);
       dy_read = read_normal(d, abs_dy);
