@@ -423,7 +423,7 @@ struct packed_lanes {
   alignas(64) T u[capacity], dy[capacity], phi[capacity];
   alignas(64) bits offset[capacity];
   alignas(64) std::make_signed_t<bits> index[capacity];
-  std::ptrdiff_t count = 0;  // (the packs of a case count in case_counts while the first pass fills them)
+  std::ptrdiff_t count = 0;  // (the packs of a case count in case_counts while sort_vector fills them)
   bool moved = false;        // offset is kept (some lane may have a non-zero one); else every offset is 0
 };
 
@@ -470,9 +470,10 @@ struct sorted_lanes {
   packed_lanes<T> far_impacts, far_contacts, far_releases;  // u and dy too far apart for the band, unmoved
 };
 
-// The counts of the packs of a case while the first pass fills them: locals
-// of solve, kept in registers (a count in the pack's own object would be
-// stored and read again around every vector store into the pack).
+// The counts of the packs of a case while sort_vector fills them: a local of
+// solve's loop over a block, kept in registers (a count in the pack's own
+// object, or in any object whose address leaves solve, would be stored and
+// read again around every store of the pack's indices).
 struct case_counts {
   std::ptrdiff_t impacts = 0, releases = 0, contacts = 0;
 };
@@ -919,7 +920,7 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
 // are packed by it; the rest are noted for solve_stable.
 template <kernel_mode mode, class D>
 HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
-                                      hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
+                                      hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -1087,20 +1088,20 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
   }
   // the packs that may now take a moved lane keep offsets from here on (0 for
   // the lanes they hold)
-  auto keep_offsets = [](packed_lanes<T>& pack, std::ptrdiff_t count) {
-    if (!pack.moved) std::fill_n(pack.offset, count, typename packed_lanes<T>::bits(0));
+  auto keep_offsets = [](packed_lanes<T>& pack) {
+    if (!pack.moved) std::fill_n(pack.offset, pack.count, typename packed_lanes<T>::bits(0));
     pack.moved = true;
   };
-  keep_offsets(sorted.impacts, counts.impacts);
-  keep_offsets(sorted.releases, counts.releases);
-  keep_offsets(sorted.contacts, counts.contacts);
-  pack_valid(sorted.impacts, counts.impacts, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
-  pack_valid(sorted.releases, counts.releases, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
-  pack_valid(sorted.contacts, counts.contacts, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  keep_offsets(sorted.impacts);
+  keep_offsets(sorted.releases);
+  keep_offsets(sorted.contacts);
+  pack_valid(sorted.impacts, sorted.impacts.count, cases.impact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  pack_valid(sorted.releases, sorted.releases.count, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+  pack_valid(sorted.contacts, sorted.contacts.count, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   if (!hn::AllFalse(d, hn::And(subnormal_phi.m, valid))) {
     for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
                                   std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
-      keep_offsets(*pack, pack->count);
+      keep_offsets(*pack);
       pack_valid(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
     }
   }
@@ -1161,15 +1162,15 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   pack(d, sorted.outside, sorted.outside.count, hn::Not(hn::Or(inside, free_flight)), u, dy, phi, hn::Zero(du), index);
 }
 
-// The block's `outside` pack through sort_outside_vector, in whole vectors:
-// the last one's unused lanes repeat its last lane. Out of line, with its
-// loop: the common path's loop stays small, and the outside lanes' constants
-// and saved registers are set up once a block, not once a vector.
+// The block's `outside` pack (not empty) through sort_outside_vector, in
+// whole vectors: the last one's unused lanes repeat its last lane. The case
+// packs hold their counts by now. Out of line, with its loop: the common
+// path's loop stays small, and the outside lanes' constants and saved
+// registers are set up once a block, not once a vector.
 template <kernel_mode mode, class D>
-HWY_NOINLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted, case_counts& counts) {
+HWY_NOINLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted) {
   auto& outside = sorted.outside;
   const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
-  if (outside.count == 0) return;
   for (std::ptrdiff_t k = outside.count; k < outside.count + width; ++k) {
     outside.u[k] = outside.u[outside.count - 1];
     outside.dy[k] = outside.dy[outside.count - 1];
@@ -1180,7 +1181,7 @@ HWY_NOINLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFrom
   for (std::ptrdiff_t k = 0; k < outside.count; k += width)
     sort_outside_vector<mode>(d, hn::Load(d, outside.u + k), hn::Load(d, outside.dy + k), hn::Load(d, outside.phi + k),
                               hn::Load(di, outside.index + k), hn::FirstN(d, static_cast<std::size_t>(outside.count - k)), which_out,
-                              sorted, counts);
+                              sorted);
   outside.count = 0;
 }
 
@@ -1212,7 +1213,6 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   const D d;
   const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
   sorted_lanes<T> sorted;
-  case_counts counts;
   const bool streamed = n >= streamed_lanes;
   while (i + width <= n) {
     const std::ptrdiff_t end = std::min(n - n % width, i + block);
@@ -1223,26 +1223,21 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
         continue;
       }
     }
-    {
-      // (a copy whose address never leaves solve, so that the counts stay in
-      // registers: a store to a pack's indices might otherwise change them)
-      case_counts first_pass_counts = counts;
-      for (; i < end; i += width) {
-        if (streamed && i + prefetch_distance < n) [[likely]] {
-          hwy::Prefetch(u + i + prefetch_distance);
-          hwy::Prefetch(dy + i + prefetch_distance);
-          hwy::Prefetch(phi + i + prefetch_distance);
-          __builtin_prefetch(s + i + prefetch_distance, 1);
-          __builtin_prefetch(which + i + prefetch_distance, 1);
-        }
-        sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, first_pass_counts);
+    case_counts counts;
+    for (; i < end; i += width) {
+      if (streamed && i + prefetch_distance < n) [[likely]] {
+        hwy::Prefetch(u + i + prefetch_distance);
+        hwy::Prefetch(dy + i + prefetch_distance);
+        hwy::Prefetch(phi + i + prefetch_distance);
+        __builtin_prefetch(s + i + prefetch_distance, 1);
+        __builtin_prefetch(which + i + prefetch_distance, 1);
       }
-      counts = first_pass_counts;
+      sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, counts);
     }
-    sort_outside_lanes<mode>(d, which, sorted, counts);
-    sorted.impacts.count = std::exchange(counts.impacts, 0);
-    sorted.releases.count = std::exchange(counts.releases, 0);
-    sorted.contacts.count = std::exchange(counts.contacts, 0);
+    sorted.impacts.count = counts.impacts;
+    sorted.releases.count = counts.releases;
+    sorted.contacts.count = counts.contacts;
+    if (sorted.outside.count != 0) sort_outside_lanes<mode>(d, which, sorted);
     using L = lanes<D>;
     auto impact_clamp = [](L s, L u, L dy) { return detail::impact_clamped(s, u, dy); };
     auto release_clamp = [](L s, L, L dy) { return detail::clamped_above_positive(s, dy); };
