@@ -3,6 +3,8 @@
 // one process: each round runs every kernel once over the same array, in
 // turn, and a ratio is the median of the rounds' ratios.
 //   contact-avx512-baseline [SCENE.toml ...]   (default: the scenes of batch across scenes, and throughput)
+// A bad scene file, or one that times no batch kernel, stops it with
+// FILE:LINE: reason (exit status 1).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -52,7 +54,7 @@ std::vector<lanes_of> arrays_of(const std::string& path) {
             lanes_from(s.name + " streamed", report::mixed(inputs, t.lanes, s.seed + 1000))};
   }
   const report::run* r = report::batch_timing_run(s);
-  if (!r) return {};
+  if (!r) throw report::scene_error(path, 0, "no run of the scene times batch in double");
   const auto k = static_cast<std::uint64_t>(r - s.runs.data());
   return {lanes_from(s.name, report::mixed(inputs, r->timing_inputs, s.seed + k))};
 }
@@ -85,41 +87,49 @@ int main(int argc, char** argv) {
     kernels[k].solve(l.u.data(), l.dy.data(), l.phi.data(), s, which, static_cast<long>(l.u.size()));
   };
 
+  std::vector<lanes_of> arrays;
+  for (const auto& path : scenes) {
+    try {
+      for (auto& l : arrays_of(path)) arrays.push_back(std::move(l));
+    } catch (const report::scene_error& e) {  // FILE:LINE: reason
+      std::fprintf(stderr, "contact-avx512-baseline: %s\n", e.what());
+      return 1;
+    }
+  }
   constexpr int rounds = 11;
   std::printf("ns per lane, median of %d rounds; new / baseline: median of the rounds' ratios (their range);\n"
               "differ: lanes whose s (bits) or case differs from the baseline's\n\n", rounds);
   std::printf("| inputs | lanes | kernel | ns per lane | / baseline | range | differ |\n|---|---:|---|---:|---:|---|---:|\n");
-  for (const auto& path : scenes)
-    for (const lanes_of& l : arrays_of(path)) {
-      const long n = static_cast<long>(l.u.size());
-      const std::size_t count = kernels.size();
-      std::vector<std::vector<double>> s(count, std::vector<double>(n));
-      std::vector<std::vector<int>> which(count, std::vector<int>(n));
-      for (std::size_t k = 0; k < count; ++k) run(k, l, s[k].data(), which[k].data());
-      const long repeats = std::max(1L, 20'000'000L / n);
-      std::vector<std::vector<double>> ns(count), ratio(count);
-      for (int round = 0; round < rounds; ++round) {
-        std::vector<double> this_round(count);
-        for (std::size_t j = 0; j < count; ++j) {
-          const std::size_t k = (j + static_cast<std::size_t>(round)) % count;  // each kernel first in turn
-          const auto start = std::chrono::steady_clock::now();
-          for (long r = 0; r < repeats; ++r) run(k, l, s[k].data(), which[k].data());
-          this_round[k] = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-                          (static_cast<double>(n) * static_cast<double>(repeats));
-        }
-        for (std::size_t k = 0; k < count; ++k) {
-          ns[k].push_back(this_round[k]);
-          ratio[k].push_back(this_round[k] / this_round[0]);
-        }
+  for (const lanes_of& l : arrays) {
+    const long n = static_cast<long>(l.u.size());
+    const std::size_t count = kernels.size();
+    std::vector<std::vector<double>> s(count, std::vector<double>(n));
+    std::vector<std::vector<int>> which(count, std::vector<int>(n));
+    for (std::size_t k = 0; k < count; ++k) run(k, l, s[k].data(), which[k].data());
+    const long repeats = std::max(1L, 20'000'000L / n);
+    std::vector<std::vector<double>> ns(count), ratio(count);
+    for (int round = 0; round < rounds; ++round) {
+      std::vector<double> this_round(count);
+      for (std::size_t j = 0; j < count; ++j) {
+        const std::size_t k = (j + static_cast<std::size_t>(round)) % count;  // each kernel first in turn
+        const auto start = std::chrono::steady_clock::now();
+        for (long r = 0; r < repeats; ++r) run(k, l, s[k].data(), which[k].data());
+        this_round[k] = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+                        (static_cast<double>(n) * static_cast<double>(repeats));
       }
       for (std::size_t k = 0; k < count; ++k) {
-        long differ = 0;
-        for (long i = 0; i < n; ++i)
-          differ += std::memcmp(&s[k][i], &s[0][i], sizeof(double)) != 0 || which[k][i] != which[0][i];
-        const auto [low, high] = std::minmax_element(ratio[k].begin(), ratio[k].end());
-        std::printf("| %s | %ld | %s | %.3f | %.3f | %.3f-%.3f | %ld |\n", l.name.c_str(), n, kernels[k].name.c_str(), median(ns[k]),
-                    median(ratio[k]), *low, *high, differ);
+        ns[k].push_back(this_round[k]);
+        ratio[k].push_back(this_round[k] / this_round[0]);
       }
-      std::fflush(stdout);
     }
+    for (std::size_t k = 0; k < count; ++k) {
+      long differ = 0;
+      for (long i = 0; i < n; ++i)
+        differ += std::memcmp(&s[k][i], &s[0][i], sizeof(double)) != 0 || which[k][i] != which[0][i];
+      const auto [low, high] = std::minmax_element(ratio[k].begin(), ratio[k].end());
+      std::printf("| %s | %ld | %s | %.3f | %.3f | %.3f-%.3f | %ld |\n", l.name.c_str(), n, kernels[k].name.c_str(), median(ns[k]),
+                  median(ratio[k]), *low, *high, differ);
+    }
+    std::fflush(stdout);
+  }
 }
