@@ -2,13 +2,14 @@
 // they replaced (extract.sh), on the report's batch timing inputs, timed in
 // one process: each round runs every kernel once over the same array, in
 // turn, and a ratio is the median of the rounds' ratios.
-//   contact-avx512-baseline [SCENE.toml ...]   (default: the scenes of batch across scenes, and throughput)
-// A bad scene file, or one that times no batch kernel, stops it with
+//   contact-avx512-baseline [SCENE.toml ...]   (default: every scene of scenes/ that times batch)
+// A bad scene file, or a named one that times no batch kernel, stops it with
 // FILE:LINE: reason (exit status 1).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -44,19 +45,19 @@ lanes_of lanes_from(const std::string& name, const std::vector<report::input>& i
 }
 
 // The arrays the report times batch on: a scene's batch timing run, or the
-// throughput scene's in-cache and streamed arrays (measure.cpp draws them so).
-std::vector<lanes_of> arrays_of(const std::string& path) {
-  const report::scene s = report::parse_scene(path);
-  const std::vector<report::input> inputs = report::generate(s);
+// throughput scene's in-cache and streamed arrays (measure.cpp draws them so);
+// none for a scene that times no batch kernel.
+std::vector<lanes_of> arrays_of(const report::scene& s) {
   if (s.batch_throughput) {
+    const std::vector<report::input> inputs = report::generate(s);
     const auto& t = *s.batch_throughput;
     return {lanes_from(s.name + " in cache", report::mixed(inputs, t.cache_lanes, s.seed + 1001)),
             lanes_from(s.name + " streamed", report::mixed(inputs, t.lanes, s.seed + 1000))};
   }
   const report::run* r = report::batch_timing_run(s);
-  if (!r) throw report::scene_error(path, 0, "no run of the scene times batch in double");
+  if (!r) return {};
   const auto k = static_cast<std::uint64_t>(r - s.runs.data());
-  return {lanes_from(s.name, report::mixed(inputs, r->timing_inputs, s.seed + k))};
+  return {lanes_from(s.name, report::mixed(report::generate(s), r->timing_inputs, s.seed + k))};
 }
 
 double median(std::vector<double> v) {
@@ -67,19 +68,23 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (!__builtin_cpu_supports("avx512f") || !__builtin_cpu_supports("avx512dq") || !__builtin_cpu_supports("avx512bw") ||
-      !__builtin_cpu_supports("avx512vl")) {
+  // the baseline is built for x86-64-v4, as the library's avx3 kernel is
+  const auto targets = contact::batch_targets();
+  if (std::none_of(targets.begin(), targets.end(), [](const auto& t) { return std::strcmp(t.name, "avx3") == 0 && t.supported; })) {
     std::printf("This CPU has no AVX-512: the baseline kernel does not run here.\n");
     return 0;
   }
   std::vector<std::string> scenes;
   for (int k = 1; k < argc; ++k) scenes.push_back(argv[k]);
-  if (scenes.empty())
-    for (const char* name : {"physical", "cancellation", "boundaries", "phi", "extreme", "throughput"})
-      scenes.push_back(std::string(CONTACT_SCENES_DIR) + "/" + name + ".toml");
+  const bool named = !scenes.empty();
+  if (!named) {
+    for (const auto& entry : std::filesystem::directory_iterator(CONTACT_SCENES_DIR))
+      if (entry.is_regular_file() && entry.path().extension() == ".toml") scenes.push_back(entry.path().string());
+    std::sort(scenes.begin(), scenes.end());
+  }
 
   std::vector<kernel> kernels{{"baseline", baseline_patched}, {"baseline as it was", baseline_as_was}};
-  for (const auto& t : contact::batch_targets())
+  for (const auto& t : targets)
     if (t.supported)
       kernels.push_back({std::string("batch[") + t.name + "]", [solve = t.solve_double](const double* u, const double* dy, const double* phi,
                                                                                        double* s, int* which, long n) { solve(u, dy, phi, s, which, n); }});
@@ -90,7 +95,10 @@ int main(int argc, char** argv) {
   std::vector<lanes_of> arrays;
   for (const auto& path : scenes) {
     try {
-      for (auto& l : arrays_of(path)) arrays.push_back(std::move(l));
+      const report::scene s = report::parse_scene(path);
+      auto of_scene = arrays_of(s);
+      if (of_scene.empty() && named) throw report::scene_error(path, 0, "no run of the scene times batch in double");
+      for (auto& l : of_scene) arrays.push_back(std::move(l));
     } catch (const report::scene_error& e) {  // FILE:LINE: reason
       std::fprintf(stderr, "contact-avx512-baseline: %s\n", e.what());
       return 1;

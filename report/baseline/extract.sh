@@ -14,5 +14,5 @@ if ! git -C "$source_dir" cat-file -e "$commit^{commit}" 2>/dev/null; then
   exit 1
 fi
 git -C "$source_dir" archive "$commit" solver/include | tar -x -C "$out/as_was"
-git -C "$source_dir" archive "$commit" solver/include | tar -x -C "$out/patched"
+cp -r "$out/as_was/solver" "$out/patched/"
 (cd "$out/patched" && git apply -p1 "$source_dir/report/baseline/compensated_release.patch")
