@@ -1076,10 +1076,6 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
                         hn::Vec<D> phi, hn::Vec<decltype(du)> offset) {
     pack(d, into, count, hn::And(lanes_of.m, valid), u, dy, phi, offset, index);
   };
-  auto pack_if_any = [&](packed_lanes<T>& into, std::ptrdiff_t& count, lane_mask<D> lanes_of, hn::Vec<D> u, hn::Vec<D> dy,
-                         hn::Vec<D> phi, hn::Vec<decltype(du)> offset) {
-    if (!hn::AllFalse(d, hn::And(lanes_of.m, valid))) pack_valid(into, count, lanes_of, u, dy, phi, offset);
-  };
   if (!hn::AllFalse(d, far.m)) [[unlikely]] {
     const auto none = hn::Zero(du);
     pack_valid(sorted.far_impacts, sorted.far_impacts.count, far_impact, u, dy, phi, none);
@@ -1105,7 +1101,8 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
       pack_valid(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
     }
   }
-  pack_if_any(sorted.scalar, sorted.scalar.count, !(answerable | cases.free_flight | far), u, dy, phi, offset);
+  const auto left_to_scalar = !(answerable | cases.free_flight | far);
+  if (!hn::AllFalse(d, hn::And(left_to_scalar.m, valid))) pack_valid(sorted.scalar, sorted.scalar.count, left_to_scalar, u, dy, phi, offset);
 }
 
 // The first pass over one vector at lane i: free flight answered (s = -u for

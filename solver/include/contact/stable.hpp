@@ -30,9 +30,9 @@ namespace contact {
 namespace stable_form {
 
 // Each formula below is written once, for a scalar Num and for the batch
-// kernel's lanes alike (detail::lane_vector): the kernel evaluates the parts
-// of every case on all lanes and divides once, numerator and denominator
-// selected by case; the scalar path takes its case's parts and divides.
+// kernel's lanes alike (detail::lane_vector): the kernel packs its lanes by
+// case, and each pack runs its case's formula on whole vectors, as the scalar
+// path runs it on one input.
 
 // A quotient before its one division.
 template <class Num>
