@@ -13,6 +13,8 @@ if ! git -C "$source_dir" cat-file -e "$commit^{commit}" 2>/dev/null; then
   echo "extract.sh: commit $commit is not in $source_dir's history (a clone with its history is needed)" >&2
   exit 1
 fi
-git -C "$source_dir" archive "$commit" solver/include | tar -x -C "$out/as_was"
+# -m: the files dated now, not at the commit, so that the build finds them newer
+# than extract.sh and the patch, and does not extract them again at every build
+git -C "$source_dir" archive "$commit" solver/include | tar -x -m -C "$out/as_was"
 cp -r "$out/as_was/solver" "$out/patched/"
 (cd "$out/patched" && git apply -p1 "$source_dir/report/baseline/compensated_release.patch")
