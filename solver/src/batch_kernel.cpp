@@ -7,7 +7,9 @@
 // lane is solve_stable's answer bit for bit.
 //
 // Two passes over each block of lanes. The first decides each lane's case and
-// answers free flight (any valid input); it packs the other lanes by case, as
+// answers free flight (any valid input) and, in the stable mode, the contacts
+// inside the common window (one division, on every lane of the vector); it
+// packs the other lanes by case, as
 // they are inside the common window, or moved by a power of two into phi's
 // band box (the moved stage of solve_stable), those outside the window once
 // the block's others are packed. The second solves each pack in
@@ -411,9 +413,10 @@ struct band_fields {
 
 // Lanes packed by case: the impacts, the releases and the contacts, so that
 // each vector runs one case's operations only (a square root and a division
-// for a root, a division for a contact). Each holds the lane's operands as the stable
-// path takes them (moved by phi's band where the lane is), the move in bits
-// (0: unmoved), and the lane's index in the arrays.
+// for a root, a division for a contact; the stable mode packs only the moved
+// contacts, as those inside the window cost less answered at once). Each holds
+// the lane's operands as the stable path takes them (moved by phi's band where
+// the lane is), the move in bits (0: unmoved), and the lane's index in the arrays.
 constexpr std::ptrdiff_t block = 256;
 
 template <class T>
@@ -1133,7 +1136,6 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
                                      hn::Sub(hn::BitCast(du, phi), hn::Set(du, detail::common_window_lowest_phi<T>)));
   const auto inside = hn::RebindMask(d, unsigned_less(du, window_offsets, hn::Set(du, detail::common_window_width<T>)));
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
-  hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
   // (the other lanes' case numbers: sort_outside_vector's)
   const hn::Rebind<std::int32_t, D> di32;
   auto sort_inside = [&](auto every_lane_inside, const outside_window<D>* outside) {
@@ -1143,7 +1145,20 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     const auto unmoved = hn::Zero(du);
     pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
     pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
-    pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
+    if constexpr (mode == kernel_mode::stable) {
+      // (A.31) here, on every lane: its one division costs less than a pack
+      // (the lanes outside the window solve 1 = 1 = 1: no subnormal operand)
+      constexpr bool all_inside = decltype(every_lane_inside)::value;
+      auto own = [&](hn::Vec<D> x) {
+        if constexpr (all_inside) return x;
+        else return hn::IfThenElse(inside, x, hn::Set(d, T(1)));
+      };
+      const L contact_s = answer_contacts<D, false>(L(own(u)), L(own(dy)), L(own(phi)));
+      hn::StoreU(hn::IfThenElse(cases.contact.m, contact_s.v, hn::Neg(u)), d, s_out + i);  // (A.29): s = -u
+    } else {  // (the rounded modes' step may leave a contact to the scalar path, which the packs' pass does)
+      hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u
+      pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
+    }
   };
   if (hn::AllTrue(d, inside)) [[likely]] {
     sort_inside(std::true_type{}, nullptr);
@@ -1151,6 +1166,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   }
   const auto free_flight = detail::free_flight_anywhere(L(u), L(dy), L(phi)).m;
   if (hn::AllFalse(d, inside)) {
+    hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
     hn::StoreU(case_numbers(d, hn::IfThenElseZero(free_flight, hn::Set(d, T(contact_case::free)))), di32, which_out + i);
   } else {
     const outside_window<D> outside{lane_mask<D>{free_flight}, lane_mask<D>{hn::FirstN(d, 0)}};

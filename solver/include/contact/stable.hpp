@@ -30,9 +30,9 @@ namespace contact {
 namespace stable_form {
 
 // Each formula below is written once, for a scalar Num and for the batch
-// kernel's lanes alike (detail::lane_vector): the kernel packs its lanes by
-// case, and each pack runs its case's formula on whole vectors, as the scalar
-// path runs it on one input.
+// kernel's lanes alike (detail::lane_vector): the kernel runs each case's
+// formula on whole vectors (of lanes packed by case, or for the contact, on
+// the lanes as they come), as the scalar path runs it on one input.
 
 // A quotient before its one division.
 template <class Num>
