@@ -9,14 +9,16 @@
 // Two passes over each block of lanes. The first decides each lane's case and
 // answers free flight (any valid input) and, in the stable mode, the contacts
 // inside the common window (one division, on every lane of the vector); it
-// packs the other lanes by case, as
-// they are inside the common window, or moved by a power of two into phi's
-// band box (the moved stage of solve_stable), those outside the window once
-// the block's others are packed. The second solves each pack in
-// whole vectors by its case's formula alone and moves s back. The rest (phi in no band, a
-// subnormal phi in float, u and dy too far apart, zero or subnormal u or dy,
-// an s that underflows or overflows once moved back, invalid input) go to
-// solve_stable, one by one.
+// packs the other lanes by case, as they are inside the common window, or
+// moved by a power of two into phi's band box (the moved stage of
+// solve_stable), those outside the window once the block's others are packed.
+// The second solves each pack in whole vectors by its case's formula alone
+// and moves s back; a last vector that a block leaves part-filled waits for
+// the next block's lanes. The far lanes (u and dy too far apart for phi's
+// band: solve_stable's exact stage) run on scaled_lanes, two vectors at a
+// time. The rest (a subnormal phi in float, a zero u or dy, a far lane whose
+// case the binades leave open, an s that underflows or overflows once moved
+// back, invalid input) go to solve_stable, one by one.
 #include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
@@ -371,6 +373,57 @@ struct scaled_lanes {
   }
 };
 
+// Two vectors as one number: each operation runs on the first, then on the
+// second. A far lane's formula on scaled_lanes is one long chain of dependent
+// operations, which a vector alone runs mostly waiting on each result; two
+// chains side by side fill those waits. (The masks of its comparisons are a
+// twin of masks.)
+template <class X>
+struct twin {
+  X first, second;
+};
+
+template <class X>
+struct twin_number : twin<X> {
+  using lane_scalar = typename X::lane_scalar;
+  twin_number() = default;
+  twin_number(X a, X b) : twin<X>{a, b} {}
+  explicit twin_number(int x) : twin<X>{X(x), X(x)} {}
+  template <class Y>
+  explicit twin_number(const twin_number<Y>& y) : twin<X>{X(y.first), X(y.second)} {}
+};
+
+template <class X>
+HWY_INLINE twin_number<X> operator+(const twin_number<X>& a, const twin_number<X>& b) { return {a.first + b.first, a.second + b.second}; }
+template <class X>
+HWY_INLINE twin_number<X> operator-(const twin_number<X>& a, const twin_number<X>& b) { return {a.first - b.first, a.second - b.second}; }
+template <class X>
+HWY_INLINE twin_number<X> operator*(const twin_number<X>& a, const twin_number<X>& b) { return {a.first * b.first, a.second * b.second}; }
+template <class X>
+HWY_INLINE twin_number<X> operator/(const twin_number<X>& a, const twin_number<X>& b) { return {a.first / b.first, a.second / b.second}; }
+template <class X>
+HWY_INLINE twin_number<X> operator-(const twin_number<X>& a) { return {-a.first, -a.second}; }
+template <class X>
+HWY_INLINE auto operator>(const twin_number<X>& a, const twin_number<X>& b) {
+  return twin<decltype(a.first > b.first)>{a.first > b.first, a.second > b.second};
+}
+template <class M, class X>
+HWY_INLINE twin_number<X> select(const twin<M>& condition, const twin_number<X>& a, const twin_number<X>& b) {
+  return {select(condition.first, a.first, b.first), select(condition.second, a.second, b.second)};
+}
+template <class X>
+HWY_INLINE twin_number<X> fused_multiply_add(const twin_number<X>& a, const twin_number<X>& b, const twin_number<X>& c) {
+  return {fused_multiply_add(a.first, b.first, c.first), fused_multiply_add(a.second, b.second, c.second)};
+}
+template <class X>
+HWY_INLINE twin_number<X> square_root(const twin_number<X>& a) { return {square_root(a.first), square_root(a.second)}; }
+template <class X>
+HWY_INLINE detail::exact_pair<twin_number<X>> two_sum(const twin_number<X>& a, const twin_number<X>& b) {
+  using detail::two_sum;
+  auto x = two_sum(a.first, b.first), y = two_sum(a.second, b.second);
+  return {{x.high, y.high}, {x.low, y.low}};
+}
+
 // phi_bands<T>' table in units of the exponent field, one entry per band for
 // the lanes' gather: the field of 2^(top - 1) (where the larger of |u|, |dy|
 // moves) and the least fields the smaller may then have, for contact and
@@ -422,7 +475,9 @@ constexpr std::ptrdiff_t block = 256;
 template <class T>
 struct packed_lanes {
   using bits = typename detail::binary_layout<T>::bits;
-  static constexpr std::ptrdiff_t capacity = block + 64;  // a whole vector past the count
+  // a block's lanes, those waiting from the block before (fewer than an
+  // answer of up to two vectors takes) and the last answer's padding
+  static constexpr std::ptrdiff_t capacity = block + 4 * HWY_MAX_BYTES / sizeof(T);
   alignas(64) T u[capacity], dy[capacity], phi[capacity];
   alignas(64) bits offset[capacity];
   alignas(64) std::make_signed_t<bits> index[capacity];
@@ -647,29 +702,44 @@ HWY_INLINE lanes<D> value_of(const scaled_lanes<D>& x) {
 template <class D>
 HWY_INLINE lanes<D> where_carried(lanes<D> value, lanes<D> s) { return hn::IfThenElse(hn::IsNaN(value.v), value.v, s.v); }
 
+// Each case two vectors at a time (twin_number), as its chain is long.
 template <class D>
-HWY_INLINE lanes<D> far_impacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  using S = scaled_lanes<D>;
-  const auto value = value_of(stable_form::impact(S(u), S(-dy), S(phi)));
-  return where_carried(value, detail::impact_clamped(value, u, dy));
+using lane_pair = twin_number<lanes<D>>;
+
+template <class D>
+HWY_INLINE lane_pair<D> far_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  using S = twin_number<scaled_lanes<D>>;
+  const S root = stable_form::impact(S(u), S(-dy), S(phi));
+  auto s = [](const scaled_lanes<D>& x, lanes<D> u, lanes<D> dy) {
+    const auto value = value_of(x);
+    return where_carried(value, detail::impact_clamped(value, u, dy));
+  };
+  return {s(root.first, u.first, dy.first), s(root.second, u.second, dy.second)};
 }
 
 template <class D>
-HWY_INLINE lanes<D> far_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  using S = scaled_lanes<D>;
-  const auto value = value_of(stable_form::contact(S(u), S(dy), S(phi)));
-  return where_carried(value, detail::contact_clamped(value, dy));
+HWY_INLINE lane_pair<D> far_contacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  using S = twin_number<scaled_lanes<D>>;
+  const S root = stable_form::contact(S(u), S(dy), S(phi));
+  auto s = [](const scaled_lanes<D>& x, lanes<D> dy) {
+    const auto value = value_of(x);
+    return where_carried(value, detail::contact_clamped(value, dy));
+  };
+  return {s(root.first, dy.first), s(root.second, dy.second)};
 }
 
 template <class D>
-HWY_INLINE lanes<D> far_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  using S = scaled_lanes<D>;
+HWY_INLINE lane_pair<D> far_releases(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  using S = twin_number<scaled_lanes<D>>;
   using T = hn::TFromD<D>;
   const S root = stable_form::release(S(u), S(dy), S(phi));
-  const auto value = value_of(root);
-  const auto s = where_carried(value, detail::clamped_above_positive(value, dy));
-  const auto near_threshold = hn::Not(hn::Gt(root.exponent, hn::Set(D(), T(std::numeric_limits<T>::max_exponent + 1))));
-  return hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v);
+  auto s = [](const scaled_lanes<D>& x, lanes<D> dy) {
+    const auto value = value_of(x);
+    const auto s = where_carried(value, detail::clamped_above_positive(value, dy));
+    const auto near_threshold = hn::Not(hn::Gt(x.exponent, hn::Set(D(), T(std::numeric_limits<T>::max_exponent + 1))));
+    return lanes<D>(hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v));
+  };
+  return {s(root.first, dy.first), s(root.second, dy.second)};
 }
 
 // What a kernel computes: solve_stable's results, solve_rounded's, or
@@ -795,23 +865,32 @@ HWY_INLINE bool phi_often_beyond_common_window(D d, const float* phi, std::ptrdi
 
 // The packed lanes' s by `answer`, written to their places (their cases are
 // written by the first pass); those whose s is NaN or cannot move back go to
-// `left`. `clamp` (s, u, dy) is the lanes' clamp onto the side of dy of their case.
-template <kernel_mode mode, class D, class Answer, class Clamp>
+// `left`. `clamp` (s, u, dy) is the lanes' clamp onto the side of dy of their
+// case; `answer` takes vectors_per_answer vectors at once (two as a lane_pair).
+// Before the call's last block only whole answers are given: the lanes of a
+// last, partly filled one wait in the pack for the next block's (padding
+// costs as much as lanes, and the rare packs, of a few lanes a block, would
+// be mostly padding).
+template <int vectors_per_answer, kernel_mode mode, class D, class Answer, class Clamp>
 HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_lanes<mode, hn::TFromD<D>>& left,
-                             Answer answer, Clamp clamp) {
+                             Answer answer, Clamp clamp, bool last_block) {
   const auto *u_in = left.u, *dy_in = left.dy;
   auto* s_out = left.s;
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   const hn::RebindToUnsigned<D> du;
   const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
-  for (std::ptrdiff_t k = lanes_in.count; k < lanes_in.count + width; ++k) {  // the last vector's unused lanes: 1 = 1 = 1
-    lanes_in.u[k] = lanes_in.dy[k] = lanes_in.phi[k] = T(1);
-    lanes_in.offset[k] = 0;
-    lanes_in.index[k] = 0;  // a lane of the arrays, for the gathers below
+  const std::ptrdiff_t step = vectors_per_answer * width;
+  const std::ptrdiff_t solved = last_block ? lanes_in.count : lanes_in.count - lanes_in.count % step;
+  if (last_block) {
+    for (std::ptrdiff_t k = lanes_in.count; k < lanes_in.count + step; ++k) {  // the last answer's unused lanes: 1 = 1 = 1
+      lanes_in.u[k] = lanes_in.dy[k] = lanes_in.phi[k] = T(1);
+      lanes_in.offset[k] = 0;
+      lanes_in.index[k] = 0;  // a lane of the arrays, for the gathers below
+    }
   }
-  for (std::ptrdiff_t k = 0; k < lanes_in.count; k += width) {
-    L s = answer(L(hn::Load(d, lanes_in.u + k)), L(hn::Load(d, lanes_in.dy + k)), L(hn::Load(d, lanes_in.phi + k)));
+  // the vector at k: s moved back and written
+  auto write_back = [&](std::ptrdiff_t k, L s) __attribute__((always_inline)) {
     auto moved_back = hn::FirstN(d, width);
     if (lanes_in.moved) {
       const L moved_s = s;
@@ -833,7 +912,7 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
       }
     }
     moved_back = hn::AndNot(hn::IsNaN(s.v), moved_back);  // (far lanes: a NaN s is one scaled_lanes did not carry)
-    const std::ptrdiff_t lanes_here = std::min(width, lanes_in.count - k);
+    const std::ptrdiff_t lanes_here = std::clamp(solved - k, std::ptrdiff_t(0), width);
     if (lanes_here == width) {
       hn::ScatterIndex(s.v, d, s_out, hn::Load(hn::RebindToSigned<D>(), lanes_in.index + k));
     } else {
@@ -847,9 +926,33 @@ HWY_INLINE void solve_packed(D d, packed_lanes<hn::TFromD<D>>& lanes_in, left_la
       for (std::ptrdiff_t j = 0; j < lanes_here; ++j)
         if (!((moved_back_bits[j / 8] >> (j % 8)) & 1)) left.take(lanes_in.index[k + j]);
     }
+  };
+  auto operands = [&](std::ptrdiff_t k, const T* of) { return L(hn::Load(d, of + k)); };
+  for (std::ptrdiff_t k = 0; k < solved; k += step) {
+    if constexpr (vectors_per_answer == 1) {
+      write_back(k, answer(operands(k, lanes_in.u), operands(k, lanes_in.dy), operands(k, lanes_in.phi)));
+    } else {
+      auto pair = [&](const T* of) { return lane_pair<D>(operands(k, of), operands(k + width, of)); };
+      const lane_pair<D> s = answer(pair(lanes_in.u), pair(lanes_in.dy), pair(lanes_in.phi));
+      write_back(k, s.first);
+      write_back(k + width, s.second);
+    }
   }
-  lanes_in.count = 0;
-  lanes_in.moved = false;
+  // the lanes that wait (fewer than an answer takes) to the front, in whole
+  // vectors (where nothing was solved they are there already)
+  const std::ptrdiff_t waiting = lanes_in.count - solved;
+  if (waiting != 0 && solved != 0) {
+    const hn::RebindToSigned<D> di;
+    for (std::ptrdiff_t k = 0; k < step; k += width) {
+      hn::Store(hn::Load(d, lanes_in.u + solved + k), d, lanes_in.u + k);
+      hn::Store(hn::Load(d, lanes_in.dy + solved + k), d, lanes_in.dy + k);
+      hn::Store(hn::Load(d, lanes_in.phi + solved + k), d, lanes_in.phi + k);
+      if (lanes_in.moved) hn::Store(hn::Load(du, lanes_in.offset + solved + k), du, lanes_in.offset + k);
+      hn::Store(hn::Load(di, lanes_in.index + solved + k), di, lanes_in.index + k);
+    }
+  }
+  lanes_in.count = waiting;
+  lanes_in.moved = lanes_in.moved && waiting != 0;
 }
 
 // The case numbers of T's lanes as the int lanes of the `which` array
@@ -1227,16 +1330,9 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   const auto width = static_cast<std::ptrdiff_t>(hn::Lanes(d));
   sorted_lanes<T> sorted;
   const bool streamed = n >= streamed_lanes;
-  while (i + width <= n) {
-    const std::ptrdiff_t end = std::min(n - n % width, i + block);
-    if constexpr (mode == kernel_mode::rounded && std::is_same_v<T, float>) {
-      if (phi_often_beyond_common_window(d, phi + i, end - i)) {
-        left.take_whole(i, end - i);
-        i = end;
-        continue;
-      }
-    }
-    case_counts counts;
+  // the first pass over the lanes [i, end)
+  auto first_pass = [&](std::ptrdiff_t end) __attribute__((always_inline)) {
+    case_counts counts{sorted.impacts.count, sorted.releases.count, sorted.contacts.count};
     for (; i < end; i += width) {
       if (streamed && i + prefetch_distance < n) [[likely]] {
         hwy::Prefetch(u + i + prefetch_distance);
@@ -1251,16 +1347,32 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
     sorted.releases.count = counts.releases;
     sorted.contacts.count = counts.contacts;
     if (sorted.outside.count != 0) sort_outside_lanes<mode>(d, which, sorted);
+  };
+  const std::ptrdiff_t vector_lanes = n - n % width;
+  while (i < vector_lanes) {
+    const std::ptrdiff_t end = std::min(vector_lanes, i + block);
+    if constexpr (mode == kernel_mode::rounded && std::is_same_v<T, float>) {
+      if (phi_often_beyond_common_window(d, phi + i, end - i)) {
+        left.take_whole(i, end - i);
+        i = end;
+      } else {
+        first_pass(end);
+      }
+    } else {
+      first_pass(end);
+    }
+    // the packs of each case, by its case's answer in this mode (whole
+    // answers only until the last block)
+    const bool last_block = end == vector_lanes;
     using L = lanes<D>;
     auto impact_clamp = [](L s, L u, L dy) { return detail::impact_clamped(s, u, dy); };
     auto release_clamp = [](L s, L, L dy) { return detail::clamped_above_positive(s, dy); };
     auto contact_clamp = [](L s, L, L dy) { return detail::contact_clamped(s, dy); };
-    // the packs of the three cases, each by its case's answer in this mode
-    auto solve_cases = [&](packed_lanes<T>& impacts, packed_lanes<T>& releases, packed_lanes<T>& contacts, auto impact,
-                           auto release, auto contact) {
-      solve_packed(d, impacts, left, impact, impact_clamp);
-      solve_packed(d, releases, left, release, release_clamp);
-      solve_packed(d, contacts, left, contact, contact_clamp);
+    auto solve_cases = [&]<int vectors_per_answer = 1>(packed_lanes<T>& impacts, packed_lanes<T>& releases, packed_lanes<T>& contacts,
+                                                       auto impact, auto release, auto contact) {
+      solve_packed<vectors_per_answer>(d, impacts, left, impact, impact_clamp, last_block);
+      solve_packed<vectors_per_answer>(d, releases, left, release, release_clamp, last_block);
+      solve_packed<vectors_per_answer>(d, contacts, left, contact, contact_clamp, last_block);
     };
     if constexpr (mode == kernel_mode::rounded_through_double) {
       // (float's stable formulas, as round_through_double takes them: unclamped)
@@ -1282,8 +1394,10 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
                     [](auto... x) { return answer_impacts<D, true>(x...); }, [](auto... x) { return answer_releases<D, true>(x...); },
                     [](auto... x) { return answer_contacts<D, true>(x...); });
       if (sorted.far_impacts.count + sorted.far_releases.count + sorted.far_contacts.count != 0)
-        solve_cases(sorted.far_impacts, sorted.far_releases, sorted.far_contacts, [](auto... x) { return far_impacts<D>(x...); },
-                    [](auto... x) { return far_releases<D>(x...); }, [](auto... x) { return far_contacts<D>(x...); });
+        solve_cases.template operator()<2>(sorted.far_impacts, sorted.far_releases, sorted.far_contacts,
+                                           [](auto... x) { return far_impacts<D>(x...); },
+                                           [](auto... x) { return far_releases<D>(x...); },
+                                           [](auto... x) { return far_contacts<D>(x...); });
     }
     leave_each_lane(sorted.scalar, left);
     left.finish();
