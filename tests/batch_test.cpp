@@ -9,10 +9,15 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#if defined(__x86_64__)
+#include <cpuid.h>
+#endif
 
 #include "contact/batch.hpp"
 #include "contact/harness/families.hpp"
@@ -398,6 +403,49 @@ TEST(Batch, DoubleFarAndExtremeLanesEqualScalarStableInVectors) {
 TEST(Batch, FloatFarAndExtremeLanesEqualScalarStable) {
   // (float's subnormal phi straddles two bands and stays with solve_stable: no bound on those left)
   expect_same_as_scalar(far_and_extreme_lanes<float>(27, 300000));
+}
+
+// Which components of the register state are in use (XGETBV with ECX = 1:
+// bit 2, the upper halves of AVX's ymm registers; bit 6, those of AVX-512's
+// zmm), where the CPU tells.
+std::optional<std::uint64_t> register_state_in_use() {
+#if defined(__x86_64__)
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  if (!__get_cpuid_count(0xd, 1, &a, &b, &c, &d) || !(a & (1u << 2))) return std::nullopt;
+  unsigned low = 0, high = 0;
+  asm volatile("xgetbv" : "=a"(low), "=d"(high) : "c"(1));
+  return (std::uint64_t(high) << 32) | low;
+#else
+  return std::nullopt;
+#endif
+}
+
+// Each kernel returns with the upper halves of the vector registers clean, as
+// the x86 ABI expects of a function that takes and returns no vector: the SSE
+// code its caller runs next (libm's, say) would pay for every instruction
+// while they are not. Arrays of every lane kind, and of far lanes alone
+// (their pack solved only at the end of the call).
+template <class T>
+void expect_upper_halves_clean_after_each_kernel(std::uint64_t seed) {
+  constexpr std::uint64_t upper_halves = (1u << 2) | (1u << 6);
+  for (const auto& in : {inputs<T>(1000, seed), far_and_extreme_lanes<T>(seed + 1, 1000), far_and_extreme_lanes<T>(seed + 2, 8)}) {
+    const auto n = static_cast<std::ptrdiff_t>(in.u.size());
+    std::vector<T> s(in.u.size());
+    std::vector<int> which(in.u.size());
+    for (const auto& target : runnable_targets())
+      for (mode m : {mode::stable, mode::rounded}) {
+        kernel_of<T>(target, m)(in.u.data(), in.dy.data(), in.phi.data(), s.data(), which.data(), n);
+        const auto in_use = register_state_in_use();
+        ASSERT_TRUE(in_use.has_value());
+        EXPECT_EQ(*in_use & upper_halves, 0u) << target.name << (m == mode::rounded ? " rounded" : "") << " on " << n << " lanes";
+      }
+  }
+}
+
+TEST(Batch, KernelsReturnWithTheUpperHalvesOfVectorRegistersClean) {
+  if (!register_state_in_use()) GTEST_SKIP() << "this CPU does not tell which register state is in use";
+  expect_upper_halves_clean_after_each_kernel<double>(95);
+  expect_upper_halves_clean_after_each_kernel<float>(98);
 }
 
 // Within 8 ulps of u = dy (phi - 1), at physical magnitudes (inside the window)
