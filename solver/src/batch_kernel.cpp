@@ -965,52 +965,32 @@ HWY_INLINE auto case_numbers(D d, hn::Vec<D> cases) {
 
 // Each lane's case, as solve_cases decides (A.21): the pre-test, and the
 // exact sum for the lanes it leaves undecided near the boundary; u, dy, phi
-// as the stable path takes them (moved), phi dy as phi_factor dy_factor.
-// With `every_lane_answerable` (every lane inside the common window, as in
-// most vectors) the decision takes the fewest mask operations; otherwise it
-// decides the lanes of `answerable`, and `outside` holds what the first pass
-// found of the vector's lanes (free flight found before; a lane of a
-// subnormal phi that the pre-test leaves undecided leaves `answerable`).
-template <class D>
-struct outside_window {
-  lane_mask<D> free_flight, subnormal_phi;
-};
-
+// as the stable path takes them (moved), phi dy as phi_factor dy_factor. Every
+// lane is decided: a lane that is not to be answered solves 1 = 1 = 1 (a
+// contact, decided by the pre-test, with no subnormal operand), and its caller
+// masks its case. Few masks are kept: AVX-512 holds masks in eight registers,
+// and more of them are spilled and reloaded.
 template <class D>
 struct lane_cases {
   lane_mask<D> free_flight, impact, contact, release;
   hn::Vec<D> which;  // the case numbers (contact_case), in T
+  lane_mask<D> undecided;  // the lanes the pre-test left to the exact sum
 };
 
-template <bool every_lane_answerable, class D>
-HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi, lanes<D> phi_factor, lanes<D> dy_factor,
-                                      lane_mask<D>& answerable, const std::type_identity_t<outside_window<D>>* outside) {
+template <class D>
+HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi, lanes<D> phi_factor, lanes<D> dy_factor) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
-  // (no lane's dy is NaN: the lanes that cannot be answered solve 1 = 1 = 1)
   const auto contact_before = dy > L(0), impact_before = dy <= L(0);
   const L sum = u + dy;
   const auto [estimate, margin] = detail::estimate_contact(sum, phi_factor, dy_factor);
   const auto decided = fabs(estimate) > margin;
   auto stays = estimate > L(0);
-  auto undecided = contact_before & !decided;
-  if constexpr (!every_lane_answerable) {
-    // (with a subnormal phi the pre-test decides every valid lane, proofs/README.md;
-    // should it not, solve_stable takes the lane)
-    answerable = answerable & !(outside->subnormal_phi & undecided);
-    undecided = answerable & undecided;
-  }
+  const auto undecided = contact_before & !decided;
   if (!hn::AllFalse(d, undecided.m)) [[unlikely]]
     stays = (decided & stays) | (!decided & detail::exact_sum_nonnegative(u, dy, phi));
-  lane_cases<D> cases{impact_before & (sum <= L(0)), {}, contact_before & stays, contact_before & !stays, {}};
-  if constexpr (every_lane_answerable) {
-    cases.impact = impact_before & !cases.free_flight;
-  } else {
-    cases.free_flight = outside->free_flight | (answerable & cases.free_flight);
-    cases.impact = answerable & impact_before & !cases.free_flight;
-    cases.contact = answerable & cases.contact;
-    cases.release = answerable & cases.release & !cases.free_flight;
-  }
+  lane_cases<D> cases{impact_before & (sum <= L(0)), {}, contact_before & stays, contact_before & !stays, {}, undecided};
+  cases.impact = impact_before & !cases.free_flight;
   cases.which = hn::IfThenElse(cases.free_flight.m, hn::Set(d, T(contact_case::free)),
                                hn::IfThenElse(contact_before.m,
                                               hn::IfThenElse(stays.m, hn::Set(d, T(contact_case::contact)),
@@ -1161,8 +1141,15 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
     }
   }
 
-  const outside_window<D> outside{lane_mask<D>{hn::FirstN(d, 0)}, subnormal_phi};
-  const auto cases = decide_cases<false>(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor, answerable, &outside);
+  auto cases = decide_cases(d, moved_u, moved_dy, moved_phi, phi_factor, dy_factor);
+  // (with a subnormal phi the pre-test decides every valid lane,
+  // proofs/README.md; should it not, solve_stable takes the lane)
+  const auto undecided_by_subnormal_phi = subnormal_phi & cases.undecided;
+  answerable = answerable & !undecided_by_subnormal_phi;
+  subnormal_phi = subnormal_phi & !undecided_by_subnormal_phi;
+  // (the lanes not answered solve 1 = 1 = 1, a contact, or are left undecided)
+  cases.contact = cases.contact & answerable;
+  cases.release = cases.release & answerable;
   const auto far_which = hn::IfThenElse(far_impact.m, hn::Set(d, T(contact_case::impact)),
                                         hn::IfThenElse(far_contact.m, hn::Set(d, T(contact_case::contact)),
                                                        hn::Set(d, T(contact_case::release))));
@@ -1241,26 +1228,36 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<hn::TFromD<decltype(di)>>(i)));
   // (the other lanes' case numbers: sort_outside_vector's)
   const hn::Rebind<std::int32_t, D> di32;
-  auto sort_inside = [&](auto every_lane_inside, const outside_window<D>* outside) {
-    lane_mask<D> answerable{inside};
-    const auto cases = decide_cases<every_lane_inside()>(d, L(u), L(dy), L(phi), L(phi), L(dy), answerable, outside);
-    hn::StoreU(case_numbers(d, cases.which), di32, which_out + i);
+  // The lanes inside the window, decided and answered or packed. Where a
+  // vector mixes both (`free_flight`: its lanes in free flight, known), the lanes
+  // outside solve 1 = 1 = 1 here, a contact, decided at once and with no
+  // subnormal operand; their case and s are theirs where they are in free
+  // flight, and sort_outside_vector's (or solve_stable's) where not.
+  auto sort_inside = [&](auto every_lane_inside, const hn::Mask<D>* free_flight) {
+    constexpr bool all_inside = decltype(every_lane_inside)::value;
+    auto own = [&](hn::Vec<D> x) {
+      if constexpr (all_inside) return L(x);
+      else return L(hn::IfThenElse(inside, x, hn::Set(d, T(1))));
+    };
+    const L own_u = own(u), own_dy = own(dy), own_phi = own(phi);
+    const auto cases = decide_cases(d, own_u, own_dy, own_phi, own_phi, own_dy);
+    auto contact = cases.contact.m;
+    auto which = cases.which;
+    if constexpr (!all_inside) {
+      contact = hn::And(contact, inside);
+      which = hn::IfThenElse(*free_flight, hn::Set(d, T(contact_case::free)), which);
+    }
+    hn::StoreU(case_numbers(d, which), di32, which_out + i);
     const auto unmoved = hn::Zero(du);
     pack(d, sorted.impacts, counts.impacts, cases.impact.m, u, dy, phi, unmoved, index);
     pack(d, sorted.releases, counts.releases, cases.release.m, u, dy, phi, unmoved, index);
     if constexpr (mode == kernel_mode::stable) {
       // (A.31) here, on every lane: its one division costs less than a pack
-      // (the lanes outside the window solve 1 = 1 = 1: no subnormal operand)
-      constexpr bool all_inside = decltype(every_lane_inside)::value;
-      auto own = [&](hn::Vec<D> x) {
-        if constexpr (all_inside) return x;
-        else return hn::IfThenElse(inside, x, hn::Set(d, T(1)));
-      };
-      const L contact_s = answer_contacts<D, false>(L(own(u)), L(own(dy)), L(own(phi)));
-      hn::StoreU(hn::IfThenElse(cases.contact.m, contact_s.v, hn::Neg(u)), d, s_out + i);  // (A.29): s = -u
+      const L contact_s = answer_contacts<D, false>(own_u, own_dy, own_phi);
+      hn::StoreU(hn::IfThenElse(contact, contact_s.v, hn::Neg(u)), d, s_out + i);  // (A.29): s = -u
     } else {  // (the rounded modes' step may leave a contact to the scalar path, which the packs' pass does)
       hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u
-      pack(d, sorted.contacts, counts.contacts, cases.contact.m, u, dy, phi, unmoved, index);
+      pack(d, sorted.contacts, counts.contacts, contact, u, dy, phi, unmoved, index);
     }
   };
   if (hn::AllTrue(d, inside)) [[likely]] {
@@ -1272,8 +1269,7 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
     hn::StoreU(hn::Neg(u), d, s_out + i);  // (A.29): s = -u; the second pass writes the other lanes' s
     hn::StoreU(case_numbers(d, hn::IfThenElseZero(free_flight, hn::Set(d, T(contact_case::free)))), di32, which_out + i);
   } else {
-    const outside_window<D> outside{lane_mask<D>{free_flight}, lane_mask<D>{hn::FirstN(d, 0)}};
-    sort_inside(std::false_type{}, &outside);
+    sort_inside(std::false_type{}, &free_flight);
   }
   pack(d, sorted.outside, sorted.outside.count, hn::Not(hn::Or(inside, free_flight)), u, dy, phi, hn::Zero(du), index);
 }
