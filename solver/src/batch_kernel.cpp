@@ -1233,7 +1233,10 @@ HWY_INLINE void sort_vector(D d, const hn::TFromD<D>* u_in, const hn::TFromD<D>*
   // outside solve 1 = 1 = 1 here, a contact, decided at once and with no
   // subnormal operand; their case and s are theirs where they are in free
   // flight, and sort_outside_vector's (or solve_stable's) where not.
-  auto sort_inside = [&](auto every_lane_inside, const hn::Mask<D>* free_flight) {
+  // Always inlined: the compiler's own choice left it a call per vector in
+  // some instantiations (float on AVX-512), which then saves and restores
+  // the loop's registers around every vector.
+  auto sort_inside = [&](auto every_lane_inside, const hn::Mask<D>* free_flight) __attribute__((always_inline)) {
     constexpr bool all_inside = decltype(every_lane_inside)::value;
     auto own = [&](hn::Vec<D> x) {
       if constexpr (all_inside) return L(x);
