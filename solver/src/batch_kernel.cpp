@@ -13,12 +13,12 @@
 // moved by a power of two into phi's band box (the moved stage of
 // solve_stable), those outside the window once the block's others are packed.
 // The second solves each pack in whole vectors by its case's formula alone
-// and moves s back; a last vector that a block leaves part-filled waits for
-// the next block's lanes. The far lanes (u and dy too far apart for phi's
-// band: solve_stable's exact stage) run on scaled_lanes, two vectors at a
-// time. The rest (a subnormal phi in float, a zero u or dy, a far lane whose
-// case the binades leave open, an s that underflows or overflows once moved
-// back, invalid input) go to solve_stable, one by one.
+// (two vectors at a time in the stable mode) and moves s back; a last vector
+// that a block leaves part-filled waits for the next block's lanes. The far
+// lanes (u and dy too far apart for phi's band: solve_stable's exact stage)
+// run on scaled_lanes. The rest (a subnormal phi in float, a zero u or dy, a
+// far lane whose case the binades leave open, an s that underflows or
+// overflows once moved back, invalid input) go to solve_stable, one by one.
 #include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
@@ -374,10 +374,10 @@ struct scaled_lanes {
 };
 
 // Two vectors as one number: each operation runs on the first, then on the
-// second. A far lane's formula on scaled_lanes is one long chain of dependent
-// operations, which a vector alone runs mostly waiting on each result; two
-// chains side by side fill those waits. (The masks of its comparisons are a
-// twin of masks.)
+// second. A root's formula (on lanes, or on scaled_lanes for a far lane) is
+// one long chain of dependent operations, which a vector alone runs mostly
+// waiting on each result; two chains side by side fill those waits. (The
+// masks of its comparisons are a twin of masks.)
 template <class X>
 struct twin {
   X first, second;
@@ -423,6 +423,15 @@ HWY_INLINE detail::exact_pair<twin_number<X>> two_sum(const twin_number<X>& a, c
   auto x = two_sum(a.first, b.first), y = two_sum(a.second, b.second);
   return {{x.high, y.high}, {x.low, y.low}};
 }
+// (the roots of a subnormal phi, two vectors at a time)
+template <class X>
+HWY_INLINE detail::normal_factors<twin_number<X>> subnormal_phi_factors(const twin_number<X>& phi, const twin_number<X>& x) {
+  const auto a = subnormal_phi_factors(phi.first, x.first), b = subnormal_phi_factors(phi.second, x.second);
+  return {{a.phi, b.phi}, {a.x, b.x}, {a.down, b.down}, true};
+}
+
+template <class D>
+using lane_pair = twin_number<lanes<D>>;
 
 // phi_bands<T>' table in units of the exponent field, one entry per band for
 // the lanes' gather: the field of 2^(top - 1) (where the larger of |u|, |dy|
@@ -608,20 +617,30 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
 // (A.30), (A.31) and (A.32), each on a pack of its own, as solve_stable
 // solves them (stable_form's formulas, then the clamp onto the case's side).
 // With `phi_is_subnormal` the products with phi are formed from normal
-// factors (detail::factors_of).
+// factors (detail::factors_of). The roots take two vectors at a time
+// (lane_pair): a square root, then a division, on one chain of dependent
+// operations, which a vector alone runs mostly waiting on each result.
 template <class D, bool phi_is_subnormal>
-HWY_INLINE lanes<D> answer_impacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  return detail::impact_clamped(stable_form::impact<phi_is_subnormal>(u, -dy, phi), u, dy);
+HWY_INLINE lane_pair<D> answer_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  const lane_pair<D> s = stable_form::impact<phi_is_subnormal>(u, -dy, phi);
+  return {detail::impact_clamped(s.first, u.first, dy.first), detail::impact_clamped(s.second, u.second, dy.second)};
 }
 
 template <class D, bool phi_is_subnormal>
-HWY_INLINE lanes<D> answer_releases(lanes<D> u, lanes<D> dy, lanes<D> phi) {
-  return detail::clamped_above_positive(stable_form::release<phi_is_subnormal>(u, dy, phi), dy);
+HWY_INLINE lane_pair<D> answer_releases(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  const lane_pair<D> s = stable_form::release<phi_is_subnormal>(u, dy, phi);
+  return {detail::clamped_above_positive(s.first, dy.first), detail::clamped_above_positive(s.second, dy.second)};
 }
 
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
   return detail::contact_clamped(stable_form::contact<phi_is_subnormal>(u, dy, phi), dy);
+}
+
+template <class D, bool phi_is_subnormal>
+HWY_INLINE lane_pair<D> answer_contacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
+  return {answer_contacts<D, phi_is_subnormal>(u.first, dy.first, phi.first),
+          answer_contacts<D, phi_is_subnormal>(u.second, dy.second, phi.second)};
 }
 
 // ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
@@ -703,9 +722,6 @@ template <class D>
 HWY_INLINE lanes<D> where_carried(lanes<D> value, lanes<D> s) { return hn::IfThenElse(hn::IsNaN(value.v), value.v, s.v); }
 
 // Each case two vectors at a time (twin_number), as its chain is long.
-template <class D>
-using lane_pair = twin_number<lanes<D>>;
-
 template <class D>
 HWY_INLINE lane_pair<D> far_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
   using S = twin_number<scaled_lanes<D>>;
@@ -1386,12 +1402,15 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
       solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return rounded_impacts<D>(x...); },
                   [](auto... x) { return rounded_releases<D>(x...); }, [](auto... x) { return rounded_contacts<D>(x...); });
     } else {
-      solve_cases(sorted.impacts, sorted.releases, sorted.contacts, [](auto... x) { return answer_impacts<D, false>(x...); },
-                  [](auto... x) { return answer_releases<D, false>(x...); }, [](auto... x) { return answer_contacts<D, false>(x...); });
+      solve_cases.template operator()<2>(sorted.impacts, sorted.releases, sorted.contacts,
+                                         [](auto... x) { return answer_impacts<D, false>(x...); },
+                                         [](auto... x) { return answer_releases<D, false>(x...); },
+                                         [](auto... x) { return answer_contacts<D, false>(x...); });
       if (sorted.impacts_of_subnormal_phi.count + sorted.releases_of_subnormal_phi.count + sorted.contacts_of_subnormal_phi.count != 0)
-        solve_cases(sorted.impacts_of_subnormal_phi, sorted.releases_of_subnormal_phi, sorted.contacts_of_subnormal_phi,
-                    [](auto... x) { return answer_impacts<D, true>(x...); }, [](auto... x) { return answer_releases<D, true>(x...); },
-                    [](auto... x) { return answer_contacts<D, true>(x...); });
+        solve_cases.template operator()<2>(sorted.impacts_of_subnormal_phi, sorted.releases_of_subnormal_phi,
+                                           sorted.contacts_of_subnormal_phi, [](auto... x) { return answer_impacts<D, true>(x...); },
+                                           [](auto... x) { return answer_releases<D, true>(x...); },
+                                           [](auto... x) { return answer_contacts<D, true>(x...); });
       if (sorted.far_impacts.count + sorted.far_releases.count + sorted.far_contacts.count != 0)
         solve_cases.template operator()<2>(sorted.far_impacts, sorted.far_releases, sorted.far_contacts,
                                            [](auto... x) { return far_impacts<D>(x...); },
