@@ -1325,9 +1325,12 @@ void leave_each_lane(packed_lanes<T>& pack, left_lanes<mode, T>& left) {
 }
 
 // Arrays too long for the cache stream from memory: the first pass asks for
-// the lanes two blocks ahead, as the hardware's prefetcher alone leaves it
-// waiting on memory.
-constexpr std::ptrdiff_t prefetch_distance = 2 * block;
+// each array's lines 1.5 KB ahead, as the hardware's prefetcher alone leaves
+// it waiting on memory. Not further: asked a block or two ahead, the memory
+// and the arithmetic overlapped less (docs/performance.md, "The stream's
+// prefetch distance").
+template <class T>
+constexpr std::ptrdiff_t prefetch_distance = 1536 / sizeof(T);
 constexpr std::ptrdiff_t streamed_lanes = std::ptrdiff_t(1) << 15;
 
 // solve_batch, or solve_rounded_batch in the rounded mode: the first pass is
@@ -1349,12 +1352,12 @@ std::ptrdiff_t solve(const T* u, const T* dy, const T* phi, T* s, int* which, st
   auto first_pass = [&](std::ptrdiff_t end) __attribute__((always_inline)) {
     case_counts counts{sorted.impacts.count, sorted.releases.count, sorted.contacts.count};
     for (; i < end; i += width) {
-      if (streamed && i + prefetch_distance < n) [[likely]] {
-        hwy::Prefetch(u + i + prefetch_distance);
-        hwy::Prefetch(dy + i + prefetch_distance);
-        hwy::Prefetch(phi + i + prefetch_distance);
-        __builtin_prefetch(s + i + prefetch_distance, 1);
-        __builtin_prefetch(which + i + prefetch_distance, 1);
+      if (streamed && i + prefetch_distance<T> < n) [[likely]] {
+        hwy::Prefetch(u + i + prefetch_distance<T>);
+        hwy::Prefetch(dy + i + prefetch_distance<T>);
+        hwy::Prefetch(phi + i + prefetch_distance<T>);
+        __builtin_prefetch(s + i + prefetch_distance<T>, 1);
+        __builtin_prefetch(which + i + prefetch_distance<T>, 1);
       }
       sort_vector<mode>(d, u, dy, phi, s, which, i, sorted, counts);
     }
