@@ -1204,11 +1204,15 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
   pack_valid(sorted.releases, sorted.releases.count, cases.release & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   pack_valid(sorted.contacts, sorted.contacts.count, cases.contact & !subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
   if (!hn::AllFalse(d, hn::And(subnormal_phi.m, valid))) {
-    for (auto [pack, lanes_of] : {std::pair{&sorted.impacts_of_subnormal_phi, cases.impact}, std::pair{&sorted.releases_of_subnormal_phi, cases.release},
-                                  std::pair{&sorted.contacts_of_subnormal_phi, cases.contact}}) {
-      keep_offsets(*pack);
-      pack_valid(*pack, pack->count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
-    }
+    // (three inlined calls: a loop over a list of (pack, mask) kept the list
+    // on the stack and each pack's count in memory)
+    auto pack_subnormal = [&](packed_lanes<T>& into, lane_mask<D> lanes_of) __attribute__((always_inline)) {
+      keep_offsets(into);
+      pack_valid(into, into.count, lanes_of & subnormal_phi, moved_u.v, moved_dy.v, moved_phi.v, offset);
+    };
+    pack_subnormal(sorted.impacts_of_subnormal_phi, cases.impact);
+    pack_subnormal(sorted.releases_of_subnormal_phi, cases.release);
+    pack_subnormal(sorted.contacts_of_subnormal_phi, cases.contact);
   }
   const auto left_to_scalar = !(answerable | cases.free_flight | far);
   if (!hn::AllFalse(d, hn::And(left_to_scalar.m, valid))) pack_valid(sorted.scalar, sorted.scalar.count, left_to_scalar, u, dy, phi, offset);
