@@ -1015,14 +1015,31 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
   return cases;
 }
 
+// The entries of phi's bands (band_fields) for a vector of phi, gathered.
+template <class D>
+HWY_INLINE hn::Vec<hn::RebindToSigned<D>> band_entries(D, hn::Vec<D> phi) {
+  using T = hn::TFromD<D>;
+  using layout = detail::binary_layout<T>;
+  using U = typename layout::bits;
+  using fields = band_fields<T>;
+  const hn::RebindToUnsigned<D> du;
+  const hn::RebindToSigned<D> di;
+  const auto magnitude = hn::And(hn::BitCast(du, phi), hn::Set(du, U(~layout::sign)));
+  const auto phi_field = hn::BitCast(di, hn::ShiftRight<layout::significand_bits>(magnitude));
+  const auto band = hn::ShiftRight<fields::bands::band_bits>(hn::Add(phi_field, hn::Set(di, fields::index_offset)));
+  return hn::GatherIndex(di, fields::table.data(), band);
+}
+
 // The first pass over lanes outside the common window and not in free
 // flight, a vector of the `outside` pack (`valid`: the lanes of the pack; the
 // others repeat its last lane): the lanes moved by phi's band into the window
 // (solve_stable's moved stage) and the far lanes have their case decided and
-// are packed by it; the rest are noted for solve_stable.
+// are packed by it; the rest are noted for solve_stable. (`entries`:
+// band_entries of phi, in the stable mode, which moves by phi's band.)
 template <kernel_mode mode, class D>
 HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D> phi, hn::Vec<hn::RebindToSigned<D>> index,
-                                      hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted) {
+                                      hn::Mask<D> valid, int* which_out, sorted_lanes<hn::TFromD<D>>& sorted,
+                                      hn::Vec<hn::RebindToSigned<D>> entries) {
   using T = hn::TFromD<D>;
   using L = lanes<D>;
   using layout = detail::binary_layout<T>;
@@ -1092,9 +1109,6 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
       // (no move: float's rounding would then be taken at the moved scale; the
       // normal floats lie inside double's common window)
     } else {
-      const auto band = hn::ShiftRight<fields::bands::band_bits>(
-          hn::Add(field_of(hn::And(phi_bits, magnitude)), hn::Set(di, fields::index_offset)));
-      const auto entries = hn::GatherIndex(di, fields::table.data(), band);
       const auto least = hn::IfThenElse(hn::RebindMask(di, hn::Le(dy, hn::Zero(d))), fields::template read<fields::impact_lowest_part>(entries),
                                         fields::template read<fields::lowest_part>(entries));
       shift = hn::Sub(fields::template read<fields::top_part>(entries), larger);
@@ -1313,10 +1327,20 @@ HWY_NOINLINE void sort_outside_lanes(D d, int* which_out, sorted_lanes<hn::TFrom
     outside.index[k] = outside.index[outside.count - 1];
   }
   const hn::RebindToSigned<D> di;
-  for (std::ptrdiff_t k = 0; k < outside.count; k += width)
+  // phi's band entries gathered a vector ahead: the gather's wait overlaps
+  // the vector before, where the vector's own work would wait on it
+  auto entries_at = [&](std::ptrdiff_t k) {
+    if constexpr (mode == kernel_mode::stable) return band_entries(d, hn::Load(d, outside.phi + k));
+    else return hn::Zero(di);  // (unused)
+  };
+  auto next_entries = entries_at(0);
+  for (std::ptrdiff_t k = 0; k < outside.count; k += width) {
+    const auto entries = next_entries;
+    if (k + width < outside.count) next_entries = entries_at(k + width);
     sort_outside_vector<mode>(d, hn::Load(d, outside.u + k), hn::Load(d, outside.dy + k), hn::Load(d, outside.phi + k),
                               hn::Load(di, outside.index + k), hn::FirstN(d, static_cast<std::size_t>(outside.count - k)), which_out,
-                              sorted);
+                              sorted, entries);
+  }
   outside.count = 0;
 }
 
