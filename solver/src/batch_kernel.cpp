@@ -423,6 +423,11 @@ HWY_INLINE detail::exact_pair<twin_number<X>> two_sum(const twin_number<X>& a, c
   auto x = two_sum(a.first, b.first), y = two_sum(a.second, b.second);
   return {{x.high, y.high}, {x.low, y.low}};
 }
+// f on the first halves, then on the second: a twin of its results
+template <class F, class... X>
+HWY_INLINE auto each_half(F f, const twin_number<X>&... x) -> twin_number<decltype(f(x.first...))> {
+  return {f(x.first...), f(x.second...)};
+}
 // (the roots of a subnormal phi, two vectors at a time)
 template <class X>
 HWY_INLINE detail::normal_factors<twin_number<X>> subnormal_phi_factors(const twin_number<X>& phi, const twin_number<X>& x) {
@@ -618,18 +623,17 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
 // solves them (stable_form's formulas, then the clamp onto the case's side).
 // With `phi_is_subnormal` the products with phi are formed from normal
 // factors (detail::factors_of). The roots take two vectors at a time
-// (lane_pair): a square root, then a division, on one chain of dependent
-// operations, which a vector alone runs mostly waiting on each result.
+// (lane_pair: a root is one long chain, twin_number).
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lane_pair<D> answer_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
-  const lane_pair<D> s = stable_form::impact<phi_is_subnormal>(u, -dy, phi);
-  return {detail::impact_clamped(s.first, u.first, dy.first), detail::impact_clamped(s.second, u.second, dy.second)};
+  const auto clamped = [](lanes<D> s, lanes<D> u, lanes<D> dy) { return detail::impact_clamped(s, u, dy); };
+  return each_half(clamped, stable_form::impact<phi_is_subnormal>(u, -dy, phi), u, dy);
 }
 
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lane_pair<D> answer_releases(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
-  const lane_pair<D> s = stable_form::release<phi_is_subnormal>(u, dy, phi);
-  return {detail::clamped_above_positive(s.first, dy.first), detail::clamped_above_positive(s.second, dy.second)};
+  const auto clamped = [](lanes<D> s, lanes<D> dy) { return detail::clamped_above_positive(s, dy); };
+  return each_half(clamped, stable_form::release<phi_is_subnormal>(u, dy, phi), dy);
 }
 
 template <class D, bool phi_is_subnormal>
@@ -639,8 +643,7 @@ HWY_INLINE lanes<D> answer_contacts(lanes<D> u, lanes<D> dy, lanes<D> phi) {
 
 template <class D, bool phi_is_subnormal>
 HWY_INLINE lane_pair<D> answer_contacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
-  return {answer_contacts<D, phi_is_subnormal>(u.first, dy.first, phi.first),
-          answer_contacts<D, phi_is_subnormal>(u.second, dy.second, phi.second)};
+  return each_half([](lanes<D> u, lanes<D> dy, lanes<D> phi) { return answer_contacts<D, phi_is_subnormal>(u, dy, phi); }, u, dy, phi);
 }
 
 // ---- the correctly rounded mode (solve_rounded_batch) ----------------------------
@@ -721,7 +724,7 @@ HWY_INLINE lanes<D> value_of(const scaled_lanes<D>& x) {
 template <class D>
 HWY_INLINE lanes<D> where_carried(lanes<D> value, lanes<D> s) { return hn::IfThenElse(hn::IsNaN(value.v), value.v, s.v); }
 
-// Each case two vectors at a time (twin_number), as its chain is long.
+// Each case two vectors at a time (twin_number).
 template <class D>
 HWY_INLINE lane_pair<D> far_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D> phi) {
   using S = twin_number<scaled_lanes<D>>;
@@ -730,7 +733,7 @@ HWY_INLINE lane_pair<D> far_impacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<D
     const auto value = value_of(x);
     return where_carried(value, detail::impact_clamped(value, u, dy));
   };
-  return {s(root.first, u.first, dy.first), s(root.second, u.second, dy.second)};
+  return each_half(s, root, u, dy);
 }
 
 template <class D>
@@ -741,7 +744,7 @@ HWY_INLINE lane_pair<D> far_contacts(lane_pair<D> u, lane_pair<D> dy, lane_pair<
     const auto value = value_of(x);
     return where_carried(value, detail::contact_clamped(value, dy));
   };
-  return {s(root.first, dy.first), s(root.second, dy.second)};
+  return each_half(s, root, dy);
 }
 
 template <class D>
@@ -755,7 +758,7 @@ HWY_INLINE lane_pair<D> far_releases(lane_pair<D> u, lane_pair<D> dy, lane_pair<
     const auto near_threshold = hn::Not(hn::Gt(x.exponent, hn::Set(D(), T(std::numeric_limits<T>::max_exponent + 1))));
     return lanes<D>(hn::IfThenElse(hn::And(hn::IsInf(s.v), near_threshold), hn::Set(D(), std::numeric_limits<T>::quiet_NaN()), s.v));
   };
-  return {s(root.first, dy.first), s(root.second, dy.second)};
+  return each_half(s, root, dy);
 }
 
 // What a kernel computes: solve_stable's results, solve_rounded's, or
