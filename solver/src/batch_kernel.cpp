@@ -157,6 +157,12 @@ HWY_INLINE hn::Mask<DU> unsigned_less(DU du, hn::Vec<DU> a, hn::Vec<DU> b) {
 // k, which converts exactly, and the magnitude is k 2^-(bias - 1 +
 // significand_bits) (as scaled<T> reads it; a product by a power of two would
 // cost a microcode assist). Zero reads as zero, of field 0 - that offset.
+// The exponent field of a magnitude's bits (sign bit clear), as signed lanes.
+template <class D>
+HWY_INLINE hn::Vec<hn::RebindToSigned<D>> field_of_magnitude(D, hn::Vec<hn::RebindToUnsigned<D>> magnitude) {
+  return hn::BitCast(hn::RebindToSigned<D>(), hn::ShiftRight<detail::binary_layout<hn::TFromD<D>>::significand_bits>(magnitude));
+}
+
 template <class D>
 struct normal_reading {
   hn::Vec<D> value;
@@ -172,7 +178,7 @@ HWY_INLINE normal_reading<D> read_normal(D d, hn::Vec<hn::RebindToUnsigned<D>> m
   constexpr int integer_offset = layout::bias - 1 + layout::significand_bits;
   const auto subnormal = hn::RebindMask(d, hn::Not(unsigned_less(du, hn::Set(du, U(layout::least_normal - 1)), magnitude)));
   const auto value = hn::IfThenElse(subnormal, hn::ConvertTo(d, hn::BitCast(di, magnitude)), hn::BitCast(d, magnitude));
-  const auto field = hn::BitCast(di, hn::ShiftRight<layout::significand_bits>(hn::BitCast(du, value)));
+  const auto field = field_of_magnitude(d, hn::BitCast(du, value));
   return {value, hn::IfThenElse(hn::RebindMask(di, subnormal), hn::Sub(field, hn::Set(di, integer_offset)), field)};
 }
 
@@ -610,7 +616,7 @@ HWY_INLINE lanes<D> move_back(D d, lanes<D> s, hn::Vec<hn::RebindToUnsigned<D>> 
   // solve_stable's move_back gives it (the binade 2^max_exponent, just beyond
   // the largest T, stays with solve_stable)
   const hn::RebindToSigned<D> di;
-  const auto moved_field = hn::Sub(hn::BitCast(di, hn::ShiftRight<significand_bits>(s_magnitude)),
+  const auto moved_field = hn::Sub(field_of_magnitude(d, s_magnitude),
                                    hn::ShiftRight<significand_bits>(hn::BitCast(di, offset)));
   const auto overflows = hn::And(hn::RebindMask(d, above_least_binade),
                                  hn::RebindMask(d, hn::Gt(moved_field, hn::Set(di, hn::TFromD<decltype(di)>(layout::exponent_field)))));
@@ -1020,15 +1026,13 @@ HWY_INLINE lane_cases<D> decide_cases(D d, lanes<D> u, lanes<D> dy, lanes<D> phi
 
 // The entries of phi's bands (band_fields) for a vector of phi, gathered.
 template <class D>
-HWY_INLINE hn::Vec<hn::RebindToSigned<D>> band_entries(D, hn::Vec<D> phi) {
+HWY_INLINE hn::Vec<hn::RebindToSigned<D>> band_entries(D d, hn::Vec<D> phi) {
   using T = hn::TFromD<D>;
-  using layout = detail::binary_layout<T>;
-  using U = typename layout::bits;
+  using U = typename detail::binary_layout<T>::bits;
   using fields = band_fields<T>;
   const hn::RebindToUnsigned<D> du;
   const hn::RebindToSigned<D> di;
-  const auto magnitude = hn::And(hn::BitCast(du, phi), hn::Set(du, U(~layout::sign)));
-  const auto phi_field = hn::BitCast(di, hn::ShiftRight<layout::significand_bits>(magnitude));
+  const auto phi_field = field_of_magnitude(d, hn::And(hn::BitCast(du, phi), hn::Set(du, U(~detail::binary_layout<T>::sign))));
   const auto band = hn::ShiftRight<fields::bands::band_bits>(hn::Add(phi_field, hn::Set(di, fields::index_offset)));
   return hn::GatherIndex(di, fields::table.data(), band);
 }
@@ -1070,14 +1074,11 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
     auto is_finite_nonzero = [&](hn::Vec<decltype(du)> magnitude_bits) {
       return unsigned_less(du, hn::Sub(magnitude_bits, one_bit), hn::Set(du, U((layout::exponent_field << significand_bits) - 1)));
     };
-    auto field_of = [&](hn::Vec<decltype(du)> magnitude_bits) {
-      return hn::BitCast(di, hn::ShiftRight<significand_bits>(magnitude_bits));
-    };
     // subnormal u and dy read as normal values (read_normal), on the vectors
     // that hold one (the rounded mode moves normal u and dy only: it reads
     // none). The test may also take a vector for a zero (or, through Min, a
     // NaN): such a lane is not finite_uv, and what it reads does not matter.
-    normal_reading<D> u_read{hn::BitCast(d, abs_u), field_of(abs_u)}, dy_read{hn::BitCast(d, abs_dy), field_of(abs_dy)};
+    normal_reading<D> u_read{hn::BitCast(d, abs_u), field_of_magnitude(d, abs_u)}, dy_read{hn::BitCast(d, abs_dy), field_of_magnitude(d, abs_dy)};
     const bool subnormal_uv =
         !rounded_mode && !hn::AllFalse(d, hn::Lt(hn::Min(hn::BitCast(d, abs_u), hn::BitCast(d, abs_dy)),
                                                  hn::Set(d, std::numeric_limits<T>::min())));
@@ -1150,7 +1151,7 @@ HWY_INLINE void sort_outside_vector(D d, hn::Vec<D> u, hn::Vec<D> dy, hn::Vec<D>
     const auto one = hn::Set(d, T(1));
     if (subnormal_uv) [[unlikely]] {  // the normal reading moved by the shift, less its own offset, and the sign
       auto moved = [&](normal_reading<D> read, hn::Vec<decltype(du)> bits) {
-        const auto reading_offset = hn::Sub(field_of(hn::BitCast(du, read.value)), read.field);
+        const auto reading_offset = hn::Sub(field_of_magnitude(d, hn::BitCast(du, read.value)), read.field);
         const auto moved_offset = hn::ShiftLeft<significand_bits>(hn::BitCast(du, hn::IfThenElseZero(fits, hn::Sub(shift, reading_offset))));
         return hn::BitCast(d, hn::Or(hn::Add(hn::BitCast(du, read.value), moved_offset), hn::AndNot(magnitude, bits)));
       };
